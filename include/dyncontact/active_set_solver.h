@@ -1,0 +1,154 @@
+#ifndef dyncontact_active_set_solver_h
+#define dyncontact_active_set_solver_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dyncontact/contact_rows.h>
+
+#include <memory>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  using namespace dealii;
+  using VectorType = TrilinosWrappers::MPI::Vector;
+  using MatrixType = TrilinosWrappers::SparseMatrix;
+
+  /**
+   * Solves   min 1/2 v^T H v - r^T v   subject to   C v <= g
+   * (ALGORITHMS.md section 3) by the primal-dual active-set method
+   * (semismooth Newton, as in deal.II's step-41/42). Each active row
+   * eliminates one slave component through an AffineConstraints line merged
+   * with the hanging-node and Dirichlet constraints; the condensed SPD
+   * problem T^T H T x = T^T (r - H k) is solved by CG, preconditioned by AMG
+   * (or Jacobi for a diagonal H) built once from H itself, so that nothing is
+   * assembled again when the active set changes.
+   *
+   * The solver knows nothing about time: the time integrators use one
+   * instance with H = S for the displacement step and one with H = M for the
+   * L2 projection.
+   */
+  /// Sums a vector of doubles over all ranks, in place.
+  void
+  sum_over_ranks(std::vector<double> &values, const MPI_Comm comm);
+
+  class ActiveSetSolver
+  {
+  public:
+    struct Parameters
+    {
+      unsigned int max_iterations     = 50;
+      double       linear_tolerance   = 1e-12;
+      unsigned int max_linear_iterations = 2000;
+
+      /// Declares subsection "Contact solver".
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    struct Result
+    {
+      unsigned int iterations        = 0;
+      unsigned int linear_iterations = 0;
+      bool         converged         = true;
+    };
+
+    ActiveSetSolver(const Parameters &parameters, const MPI_Comm comm);
+
+    /**
+     * Sets the partitioning, the mesh constraints (hanging nodes, Dirichlet;
+     * homogeneous) and the contact rows. Called once per mesh.
+     */
+    void
+    reinit(const IndexSet                  &locally_owned,
+           const IndexSet                  &locally_relevant,
+           const AffineConstraints<double> &mesh_constraints,
+           const ContactRows               &rows);
+
+    /**
+     * Sets H and builds the preconditioner once. If @p is_diagonal, H is a
+     * lumped (diagonal) matrix and Jacobi is used; with rows that only touch
+     * unconstrained slave DoFs the solve is then pointwise.
+     */
+    void
+    set_matrix(const MatrixType &H, const bool is_diagonal);
+
+    /**
+     * Solves the constrained problem for right-hand side @p r. On entry
+     * @p v is the initial guess, on exit the solution. @p active holds one
+     * flag per contact row: the warm start on entry, the final active set on
+     * exit. @p multipliers receives mu_p = nu_p . (r - H v)|_p per row
+     * (zero for inactive rows); both are the same on all ranks.
+     */
+    Result
+    solve(const VectorType     &r,
+          VectorType           &v,
+          std::vector<char>    &active,
+          std::vector<double>  &multipliers) const;
+
+    /// (C v - g)_p for all rows, the same on all ranks.
+    std::vector<double>
+    constraint_values(const VectorType &v) const;
+
+    /// (C v)_p for all rows (no gap subtracted), the same on all ranks.
+    std::vector<double>
+    apply_rows(const VectorType &v) const;
+
+  private:
+    void
+    make_constraints(const std::vector<char> &active,
+                     AffineConstraints<double> &constraints,
+                     const bool                 homogeneous) const;
+
+    /// y = T^T H T x on unconstrained entries, y_i = x_i on constrained ones.
+    void
+    vmult_condensed(const AffineConstraints<double> &homogeneous,
+                    VectorType                      &y,
+                    const VectorType                &x) const;
+
+    /// y = T^T z: adds constrained entries to the entries they depend on.
+    void
+    transpose_distribute(const AffineConstraints<double> &homogeneous,
+                         VectorType                      &z) const;
+
+    Result
+    solve_pointwise(const VectorType    &r,
+                    VectorType          &v,
+                    std::vector<char>   &active,
+                    std::vector<double> &multipliers) const;
+
+    const Parameters parameters;
+    const MPI_Comm   comm;
+
+    IndexSet                  locally_owned;
+    IndexSet                  ghost_set;
+    AffineConstraints<double> mesh_constraints;
+    const ContactRows        *rows = nullptr;
+
+    const MatrixType *H = nullptr;
+    bool              H_is_diagonal = false;
+    bool              pointwise     = false;
+    /// Diagonal of H (owned entries) and its value at each row's
+    /// eliminated DoF (the scaling c of the active-set criterion).
+    VectorType          diagonal;
+    std::vector<double> row_scaling;
+
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG>    amg;
+    std::unique_ptr<TrilinosWrappers::PreconditionJacobi> jacobi;
+  };
+} // namespace dyncontact
+
+#endif

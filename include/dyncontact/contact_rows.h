@@ -1,0 +1,89 @@
+#ifndef dyncontact_contact_rows_h
+#define dyncontact_contact_rows_h
+
+#include <deal.II/base/types.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace dyncontact
+{
+  using dealii::types::global_dof_index;
+
+  /**
+   * One linearised non-penetration constraint c_p . v <= g_p
+   * (ALGORITHMS.md section 2, the paper's eq. (10)) for the slave node p:
+   *
+   *   c_p . v = nu_p . v_S(x_p) - sum_j N_j(phi_h(x_p)) nu_p . v_M(j).
+   *
+   * The first n_components entries are the slave node's DoFs with the
+   * components of nu_p; master entries (two-body contact) follow with
+   * coefficients -N_j nu_p,k. A rigid obstacle has no master entries.
+   */
+  struct ContactRow
+  {
+    unsigned int n_components = 0;
+    /// (global DoF, coefficient) pairs; slave components first.
+    std::vector<std::pair<global_dof_index, double>> entries;
+    /// The unit normal nu_p (only n_components entries are used).
+    std::array<double, 3> normal{{0., 0., 0.}};
+    /// Reference position x_p of the slave node.
+    std::array<double, 3> position{{0., 0., 0.}};
+    /// The gap g_p (eq. 2) in m.
+    double gap = 0.;
+    /// The boundary weight w_p = int_{Gamma_C} psi_p ds (m^{d-1}).
+    double weight = 0.;
+    /// Which slave component an active row eliminates (largest |nu_i|
+    /// among the components without other constraints).
+    unsigned int eliminated = 0;
+    /// MPI rank that owns the slave node.
+    unsigned int owner = 0;
+
+    global_dof_index
+    eliminated_dof() const
+    {
+      return entries[eliminated].first;
+    }
+
+    bool
+    has_master_entries() const
+    {
+      return entries.size() > n_components;
+    }
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &n_components &entries &normal &position &gap &weight &eliminated
+        &owner;
+    }
+  };
+
+  /**
+   * All contact rows of the problem, replicated on every MPI rank (the
+   * contact boundary is small compared to the volume), in the same order on
+   * every rank. Obstacles and the two-body mapping produce the same rows, so
+   * the solver and the time integrators never ask which one they have.
+   */
+  struct ContactRows
+  {
+    std::vector<ContactRow> rows;
+
+    std::size_t
+    size() const
+    {
+      return rows.size();
+    }
+
+    bool
+    empty() const
+    {
+      return rows.empty();
+    }
+  };
+
+} // namespace dyncontact
+
+#endif

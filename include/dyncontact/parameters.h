@@ -1,0 +1,50 @@
+#ifndef dyncontact_parameters_h
+#define dyncontact_parameters_h
+
+#include <dyncontact/active_set_solver.h>
+#include <dyncontact/material.h>
+#include <dyncontact/time_integrator.h>
+
+#include <string>
+
+namespace dyncontact
+{
+  /**
+   * The parameters of a run that are not a scene's own. Each group is
+   * declared by the class that uses it (Material, ActiveSetSolver, the
+   * scenes); this struct collects them.
+   */
+  struct RunParameters
+  {
+    unsigned int dimension        = 2;
+    std::string  output_directory = "results";
+    unsigned int degree           = 1;
+
+    // subsection Time integration
+    Scheme scheme      = Scheme::improved_contact_stabilized;
+    double time_step   = 0.0125;
+    double end_time    = 2.5;
+    bool   lumped_mass = true;
+
+    // subsection Mesh
+    unsigned int initial_refinements = 0;
+
+    // subsection Output
+    double output_interval = 0.05;
+    bool   write_vtu       = true;
+
+    Material                    material;
+    ActiveSetSolver::Parameters solver;
+
+    /// Declares every parameter of the program (the scenes' included).
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads and checks them; throws with a message naming the parameter
+    /// and its allowed range.
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace dyncontact
+
+#endif

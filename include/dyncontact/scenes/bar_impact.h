@@ -1,0 +1,82 @@
+#ifndef dyncontact_scenes_bar_impact_h
+#define dyncontact_scenes_bar_impact_h
+
+#include <dyncontact/scene.h>
+
+namespace dyncontact
+{
+  /**
+   * ALGORITHMS.md section 7: a bar [0,L] x [0,H]^{d-1} moving with -v0 e_x
+   * hits a rigid wall at x = -g0. With nu = 0 the 1D solution is exact in
+   * 2D and 3D: contact starts at g0/v0, lasts 2L/c (c = sqrt(E/rho)), the
+   * contact pressure is rho c v0, and the bar leaves with +v0. The whole
+   * scene can be rotated about the z axis ("Rotation angle"), which turns
+   * the wall normal away from the coordinate axes.
+   */
+  template <int dim>
+  class BarImpact : public Scene<dim>
+  {
+  public:
+    BarImpact(ParameterHandler &prm, const Material &material);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    std::string
+    name() const override
+    {
+      return "bar impact";
+    }
+
+    void
+    create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
+
+    const Material &
+    material() const override
+    {
+      return mat;
+    }
+
+    std::vector<types::boundary_id>
+    contact_boundary_ids() const override
+    {
+      return {0};
+    }
+
+    Tensor<1, dim>
+    initial_displacement(const Point<dim> &x) const override;
+
+    Tensor<1, dim>
+    initial_velocity(const Point<dim> &x) const override;
+
+    std::optional<RigidObstacle<dim>>
+    obstacle() const override;
+
+    bool
+    has_exact_solution() const override;
+
+    ExactValues<dim>
+    exact_solution(const Point<dim> &x, const double t) const override;
+
+    double
+    reference_contact_pressure() const override;
+
+  private:
+    /// Rotates a vector from the bar's frame to the global frame.
+    Tensor<1, dim>
+    rotate(const Tensor<1, dim> &v) const;
+    Tensor<1, dim>
+    rotate_back(const Tensor<1, dim> &v) const;
+
+    Material     mat;
+    double       length;
+    double       height;
+    double       impact_velocity;
+    double       initial_gap;
+    unsigned int cells_along_length;
+    double       initial_strain;
+    double       angle; // radians
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,116 @@
+#ifndef dyncontact_simulator_h
+#define dyncontact_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <dyncontact/parameters.h>
+#include <dyncontact/scene.h>
+#include <dyncontact/statistics.h>
+
+#include <array>
+#include <fstream>
+#include <memory>
+
+namespace dyncontact
+{
+  /**
+   * The application in the shape of deal.II's step-40/42: setup (DoFs,
+   * constraints, matrices M, A, B and load f, assembled once per mesh),
+   * contact rows, the time loop with one TimeIntegrator, diagnostics and
+   * output.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    Simulator(const RunParameters &parameters,
+              ParameterHandler    &prm,
+              const MPI_Comm       comm);
+
+    /// Runs the whole simulation; returns the statistics (on all ranks).
+    Statistics
+    run();
+
+  private:
+    Statistics
+    run_simulation();
+    void
+    setup_system();
+    void
+    assemble_system();
+    void
+    make_contact_rows();
+    void
+    set_initial_values();
+    /// Appends one row to the statistics (and to statistics.tsv).
+    void
+    record_step(const unsigned int step,
+                const double       time,
+                const StepReport  &report,
+                const double       wall_time);
+    double
+    compute_energy_error(const double time) const;
+    void
+    output_results(const unsigned int step,
+                   const double       time,
+                   const StepReport  &report);
+
+    const RunParameters parameters;
+    MPI_Comm            comm;
+    ConditionalOStream  pcout;
+    std::unique_ptr<TimerOutput> timer;
+
+    std::unique_ptr<Scene<dim>> scene;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    MappingQ1<dim>                            mapping;
+    FESystem<dim>                             fe;
+    DoFHandler<dim>                           dof_handler;
+    /// Scalar FE_Q(p) on the same mesh for nodal contact fields.
+    FE_Q<dim>       scalar_fe;
+    DoFHandler<dim> scalar_dof_handler;
+
+    IndexSet                  locally_owned;
+    IndexSet                  locally_relevant;
+    IndexSet                  scalar_locally_owned;
+    IndexSet                  scalar_locally_relevant;
+    AffineConstraints<double> mesh_constraints;
+    /// Locally owned DoFs of each displacement component.
+    std::array<IndexSet, dim> component_dofs;
+
+    MatrixType mass_matrix;
+    MatrixType stiffness_matrix;
+    MatrixType viscous_matrix; // only for viscous materials
+    VectorType load;
+    VectorType boundary_mass; // w_p at every DoF of Gamma_C
+
+    ContactRows rows;
+    /// For each row, the scalar DoF of its slave node (for output).
+    std::vector<types::global_dof_index> row_scalar_dofs;
+
+    std::unique_ptr<TimeIntegrator> integrator;
+    /// Evaluates C v and C v - g for the diagnostics.
+    std::unique_ptr<ActiveSetSolver> row_evaluator;
+    VectorType                      u;
+    VectorType                      udot;
+    VectorType                      u_old;
+
+    Statistics    statistics;
+    std::ofstream statistics_file;
+    double        viscous_dissipation   = 0.;
+    double        critical_measure_sum  = 0.;
+    unsigned int  output_counter        = 0;
+    std::vector<std::pair<double, std::string>> pvd_records;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,448 @@
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <dyncontact/active_set_solver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+  void
+  sum_over_ranks(std::vector<double> &values, const MPI_Comm comm)
+  {
+    if (!values.empty())
+      {
+        const int ierr = MPI_Allreduce(MPI_IN_PLACE,
+                                       values.data(),
+                                       values.size(),
+                                       MPI_DOUBLE,
+                                       MPI_SUM,
+                                       comm);
+        AssertThrowMPI(ierr);
+      }
+  }
+
+
+
+  void
+  ActiveSetSolver::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    prm.declare_entry(
+      "Maximum active-set iterations",
+      "50",
+      Patterns::Integer(1),
+      "Largest number of primal-dual active-set iterations per constrained "
+      "problem (one displacement step or one L2 projection). A problem that "
+      "has not converged then stops the run with a message. Dimensionless.");
+    prm.declare_entry(
+      "Linear solver tolerance",
+      "1e-12",
+      Patterns::Double(0.),
+      "Relative tolerance (reduction of the preconditioned residual) of the "
+      "CG solver for each condensed linear system. Dimensionless, in (0, 1).");
+    prm.declare_entry("Maximum linear iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Largest number of CG iterations per linear system.");
+    prm.leave_subsection();
+  }
+
+  void
+  ActiveSetSolver::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    max_iterations        = prm.get_integer("Maximum active-set iterations");
+    linear_tolerance      = prm.get_double("Linear solver tolerance");
+    max_linear_iterations = prm.get_integer("Maximum linear iterations");
+    prm.leave_subsection();
+    AssertThrow(linear_tolerance > 0. && linear_tolerance < 1.,
+                ExcMessage("Contact solver/Linear solver tolerance must lie in "
+                           "(0, 1); got " +
+                           std::to_string(linear_tolerance) + "."));
+  }
+
+
+
+  ActiveSetSolver::ActiveSetSolver(const Parameters &parameters,
+                                   const MPI_Comm    comm)
+    : parameters(parameters)
+    , comm(comm)
+  {}
+
+
+
+  void
+  ActiveSetSolver::reinit(const IndexSet                  &owned,
+                          const IndexSet                  &relevant,
+                          const AffineConstraints<double> &constraints,
+                          const ContactRows               &contact_rows)
+  {
+    locally_owned = owned;
+    ghost_set     = relevant;
+    for (const ContactRow &row : contact_rows.rows)
+      for (const auto &entry : row.entries)
+        ghost_set.add_index(entry.first);
+    ghost_set.compress();
+    mesh_constraints.clear();
+    mesh_constraints.copy_from(constraints);
+    rows = &contact_rows;
+    H    = nullptr;
+  }
+
+
+
+  void
+  ActiveSetSolver::set_matrix(const MatrixType &matrix, const bool is_diagonal)
+  {
+    H             = &matrix;
+    H_is_diagonal = is_diagonal;
+
+    diagonal.reinit(locally_owned, comm);
+    for (const auto i : locally_owned)
+      diagonal(i) = matrix.diag_element(i);
+    diagonal.compress(VectorOperation::insert);
+
+    // the scaling of the active-set criterion for each row: H's diagonal at
+    // the eliminated DoF, known on the owner, summed to all ranks
+    row_scaling.assign(rows->size(), 0.);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      if (locally_owned.is_element(rows->rows[p].eliminated_dof()))
+        row_scaling[p] = diagonal(rows->rows[p].eliminated_dof());
+    sum_over_ranks(row_scaling, comm);
+
+    // A pointwise projection is possible if H is diagonal, no row has
+    // master entries, and the only mesh constraints are Dirichlet lines
+    // (no entries) that touch no row's DoFs.
+    pointwise = is_diagonal;
+    for (const ContactRow &row : rows->rows)
+      {
+        if (row.has_master_entries())
+          pointwise = false;
+        for (const auto &entry : row.entries)
+          if (mesh_constraints.is_constrained(entry.first))
+            pointwise = false;
+      }
+    for (const auto &line : mesh_constraints.get_lines())
+      if (!line.entries.empty())
+        pointwise = false;
+    pointwise = (Utilities::MPI::min(pointwise ? 1 : 0, comm) == 1);
+
+    amg.reset();
+    jacobi.reset();
+    if (is_diagonal)
+      {
+        jacobi = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
+        jacobi->initialize(matrix);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(matrix, data);
+      }
+  }
+
+
+
+  void
+  ActiveSetSolver::make_constraints(const std::vector<char>   &active,
+                                    AffineConstraints<double> &constraints,
+                                    const bool homogeneous) const
+  {
+    constraints.clear();
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      if (active[p])
+        {
+          const ContactRow      &row = rows->rows[p];
+          const global_dof_index i   = row.eliminated_dof();
+          const double           c_i = row.entries[row.eliminated].second;
+          // c_i v_i + sum_{k != i} c_k v_k = g
+          constraints.add_line(i);
+          for (unsigned int k = 0; k < row.entries.size(); ++k)
+            if (k != row.eliminated)
+              constraints.add_entry(i,
+                                    row.entries[k].first,
+                                    -row.entries[k].second / c_i);
+          if (!homogeneous)
+            constraints.set_inhomogeneity(i, row.gap / c_i);
+        }
+    constraints.merge(mesh_constraints,
+                      AffineConstraints<double>::left_object_wins);
+    constraints.close();
+  }
+
+
+
+  void
+  ActiveSetSolver::transpose_distribute(
+    const AffineConstraints<double> &homogeneous,
+    VectorType                      &z) const
+  {
+    // z <- T^T z: every owned constrained entry z_i is added, times the
+    // coefficient, to the entries z_j it depends on (possibly owned
+    // elsewhere), and then set to zero.
+    VectorType additions;
+    additions.reinit(locally_owned, ghost_set, comm, true);
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        {
+          const double z_i = z(line.index);
+          for (const auto &entry : line.entries)
+            additions(entry.first) += entry.second * z_i;
+        }
+    additions.compress(VectorOperation::add);
+    z += additions;
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        z(line.index) = 0.;
+    z.compress(VectorOperation::insert);
+  }
+
+
+
+  void
+  ActiveSetSolver::vmult_condensed(const AffineConstraints<double> &homogeneous,
+                                   VectorType                      &y,
+                                   const VectorType                &x) const
+  {
+    VectorType Tx(x);
+    homogeneous.distribute(Tx);
+    H->vmult(y, Tx);
+    transpose_distribute(homogeneous, y);
+    // constrained entries: identity scaled by H's diagonal (they stay zero)
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        y(line.index) = diagonal(line.index) * x(line.index);
+    y.compress(VectorOperation::insert);
+  }
+
+
+
+  std::vector<double>
+  ActiveSetSolver::apply_rows(const VectorType &v) const
+  {
+    VectorType ghosted(locally_owned, ghost_set, comm);
+    ghosted = v;
+    std::vector<double> values(rows->size(), 0.);
+    const unsigned int  my_rank = Utilities::MPI::this_mpi_process(comm);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      if (rows->rows[p].owner == my_rank)
+        for (const auto &entry : rows->rows[p].entries)
+          values[p] += entry.second * ghosted(entry.first);
+    sum_over_ranks(values, comm);
+    return values;
+  }
+
+
+
+  std::vector<double>
+  ActiveSetSolver::constraint_values(const VectorType &v) const
+  {
+    std::vector<double> values = apply_rows(v);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      values[p] -= rows->rows[p].gap;
+    return values;
+  }
+
+
+
+  ActiveSetSolver::Result
+  ActiveSetSolver::solve_pointwise(const VectorType    &r,
+                                   VectorType          &v,
+                                   std::vector<char>   &active,
+                                   std::vector<double> &multipliers) const
+  {
+    // H diagonal, rows on disjoint unconstrained slave DoFs: the
+    // unconstrained minimiser is v = D^{-1} r, and each row is then the
+    // projection of its node onto a half-space in the D-norm.
+    for (const auto i : locally_owned)
+      v(i) = mesh_constraints.is_constrained(i) ? 0. : r(i) / diagonal(i);
+    v.compress(VectorOperation::insert);
+
+    const unsigned int  my_rank = Utilities::MPI::this_mpi_process(comm);
+    std::vector<double> mu(rows->size(), 0.);
+    std::vector<double> act(rows->size(), 0.);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      {
+        const ContactRow &row = rows->rows[p];
+        if (row.owner != my_rank)
+          continue;
+        double cv = 0., cDc = 0.;
+        for (const auto &entry : row.entries)
+          {
+            cv += entry.second * v(entry.first);
+            cDc += entry.second * entry.second / diagonal(entry.first);
+          }
+        const double t = (cv - row.gap) / cDc;
+        if (t > 0.)
+          {
+            for (const auto &entry : row.entries)
+              v(entry.first) -= t * entry.second / diagonal(entry.first);
+            mu[p]  = t;
+            act[p] = 1.;
+          }
+      }
+    v.compress(VectorOperation::insert);
+    sum_over_ranks(mu, comm);
+    multipliers = mu;
+    sum_over_ranks(act, comm);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      active[p] = (act[p] > 0.5);
+    Result result;
+    result.iterations = 1;
+    return result;
+  }
+
+
+
+  ActiveSetSolver::Result
+  ActiveSetSolver::solve(const VectorType    &r,
+                         VectorType          &v,
+                         std::vector<char>   &active,
+                         std::vector<double> &multipliers) const
+  {
+    Assert(H != nullptr, ExcInternalError());
+    active.resize(rows->size(), 0);
+    multipliers.assign(rows->size(), 0.);
+
+    if (pointwise)
+      return solve_pointwise(r, v, active, multipliers);
+
+    Result                    result;
+    AffineConstraints<double> constraints, homogeneous;
+    VectorType                x(r), b(r), k(r), residual(r);
+    const double              r_norm = r.l2_norm();
+
+    for (result.iterations = 1;; ++result.iterations)
+      {
+        make_constraints(active, constraints, false);
+        make_constraints(active, homogeneous, true);
+
+        // k: the inhomogeneities (v = T x + k)
+        k = 0.;
+        constraints.distribute(k);
+
+        // b = T^T (r - H k)
+        H->vmult(b, k);
+        b.sadd(-1., 1., r);
+        transpose_distribute(homogeneous, b);
+
+        // warm start: the previous iterate, constrained entries zero
+        x = v;
+        for (const auto &line : homogeneous.get_lines())
+          if (locally_owned.is_element(line.index))
+            x(line.index) = 0.;
+        x.compress(VectorOperation::insert);
+
+        const double  tolerance = std::max(parameters.linear_tolerance *
+                                            std::max(b.l2_norm(), r_norm),
+                                          1e-300);
+        SolverControl control(parameters.max_linear_iterations, tolerance);
+        SolverCG<VectorType> cg(control);
+
+        struct Operator
+        {
+          const ActiveSetSolver           *solver;
+          const AffineConstraints<double> *homogeneous;
+          void
+          vmult(VectorType &dst, const VectorType &src) const
+          {
+            solver->vmult_condensed(*homogeneous, dst, src);
+          }
+        } op{this, &homogeneous};
+
+        struct Preconditioner
+        {
+          const ActiveSetSolver           *solver;
+          const AffineConstraints<double> *homogeneous;
+          void
+          vmult(VectorType &dst, const VectorType &src) const
+          {
+            if (solver->amg)
+              solver->amg->vmult(dst, src);
+            else
+              solver->jacobi->vmult(dst, src);
+            for (const auto &line : homogeneous->get_lines())
+              if (solver->locally_owned.is_element(line.index))
+                dst(line.index) = 0.;
+            dst.compress(VectorOperation::insert);
+          }
+        } preconditioner{this, &homogeneous};
+
+        try
+          {
+            cg.solve(op, x, b, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "The CG solver of the contact problem did not "
+                          "converge in " +
+                          std::to_string(e.last_step) +
+                          " iterations (residual " +
+                          std::to_string(e.last_residual) +
+                          "); increase 'Contact solver/Maximum linear "
+                          "iterations' or check the input."));
+          }
+        result.linear_iterations += control.last_step();
+
+        v = x;
+        constraints.distribute(v);
+
+        // multipliers from the residual r - H v at the slave nodes
+        H->vmult(residual, v);
+        residual.sadd(-1., 1., r);
+        {
+          VectorType ghosted(locally_owned, ghost_set, comm);
+          ghosted = residual;
+          const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+          for (unsigned int p = 0; p < rows->size(); ++p)
+            {
+              const ContactRow &row = rows->rows[p];
+              multipliers[p]        = 0.;
+              if (row.owner == my_rank && active[p])
+                for (unsigned int c = 0; c < row.n_components; ++c)
+                  multipliers[p] +=
+                    row.normal[c] * ghosted(row.entries[c].first);
+            }
+          sum_over_ranks(multipliers, comm);
+        }
+
+        // new active set: mu_p + c_p (C v - g)_p > 0
+        // (a displacement tolerance delta keeps round-off from flipping rows
+        // that sit exactly on the constraint)
+        const std::vector<double> violation = constraint_values(v);
+        double                    scale     = v.linfty_norm();
+        for (const ContactRow &row : rows->rows)
+          scale = std::max(scale, std::abs(row.gap));
+        const double      delta = 1e-11 * scale;
+        std::vector<char> new_active(rows->size(), 0);
+        for (unsigned int p = 0; p < rows->size(); ++p)
+          new_active[p] = (multipliers[p] + row_scaling[p] * violation[p] >
+                           row_scaling[p] * delta) ?
+                            1 :
+                            0;
+
+        if (new_active == active)
+          break;
+        active = new_active;
+        if (result.iterations >= parameters.max_iterations)
+          {
+            result.converged = false;
+            break;
+          }
+      }
+    return result;
+  }
+} // namespace dyncontact

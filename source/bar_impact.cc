@@ -1,0 +1,250 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include <dyncontact/scenes/bar_impact.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  BarImpact<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.declare_entry("Length",
+                      "1",
+                      Patterns::Double(),
+                      "Bar impact: length L of the bar along x, in m (> 0).");
+    prm.declare_entry("Height",
+                      "0.1",
+                      Patterns::Double(),
+                      "Bar impact: height (and, in 3D, width) of the bar, in "
+                      "m (> 0).");
+    prm.declare_entry("Impact velocity",
+                      "1",
+                      Patterns::Double(),
+                      "Bar impact: initial speed v0 towards the wall, in m/s "
+                      "(> 0).");
+    prm.declare_entry("Initial gap",
+                      "0.1",
+                      Patterns::Double(),
+                      "Bar impact: distance g0 between the bar's end x = 0 "
+                      "and the wall at x = -g0, in m (>= 0).");
+    prm.declare_entry("Cells along length",
+                      "40",
+                      Patterns::Integer(1),
+                      "Bar impact: number of coarse cells along the bar "
+                      "(before global refinement); the cells across follow "
+                      "from the aspect ratio (at least one).");
+    prm.declare_entry("Initial strain",
+                      "0",
+                      Patterns::Double(),
+                      "Bar impact: a uniform initial axial strain eps0 (u0 = "
+                      "eps0 x e_x, dimensionless, > -1); nonzero values make "
+                      "the bar vibrate (the exact solution is then unknown).");
+    prm.declare_entry("Rotation angle",
+                      "0",
+                      Patterns::Double(),
+                      "Bar impact: the whole scene (bar, velocity, wall) is "
+                      "rotated by this angle about the z axis, in degrees, so "
+                      "that the wall normal need not be a coordinate axis.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  BarImpact<dim>::BarImpact(ParameterHandler &prm, const Material &material)
+    : mat(material)
+  {
+    prm.enter_subsection("Scene");
+    length             = prm.get_double("Length");
+    height             = prm.get_double("Height");
+    impact_velocity    = prm.get_double("Impact velocity");
+    initial_gap        = prm.get_double("Initial gap");
+    cells_along_length = prm.get_integer("Cells along length");
+    initial_strain     = prm.get_double("Initial strain");
+    angle              = prm.get_double("Rotation angle") * M_PI / 180.;
+    prm.leave_subsection();
+
+    AssertThrow(std::isfinite(length) && length > 0.,
+                ExcMessage("Scene/Length must be a finite number > 0 (m)."));
+    AssertThrow(std::isfinite(height) && height > 0.,
+                ExcMessage("Scene/Height must be a finite number > 0 (m)."));
+    AssertThrow(std::isfinite(impact_velocity) && impact_velocity > 0.,
+                ExcMessage(
+                  "Scene/Impact velocity must be a finite number > 0 (m/s)."));
+    AssertThrow(std::isfinite(initial_gap) && initial_gap >= 0.,
+                ExcMessage(
+                  "Scene/Initial gap must be a finite number >= 0 (m)."));
+    AssertThrow(std::isfinite(initial_strain) && initial_strain > -1.,
+                ExcMessage(
+                  "Scene/Initial strain must be a finite number > -1."));
+    AssertThrow(std::isfinite(angle),
+                ExcMessage("Scene/Rotation angle must be a finite number."));
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BarImpact<dim>::rotate(const Tensor<1, dim> &v) const
+  {
+    Tensor<1, dim> w = v;
+    w[0]             = std::cos(angle) * v[0] - std::sin(angle) * v[1];
+    w[1]             = std::sin(angle) * v[0] + std::cos(angle) * v[1];
+    return w;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BarImpact<dim>::rotate_back(const Tensor<1, dim> &v) const
+  {
+    Tensor<1, dim> w = v;
+    w[0]             = std::cos(angle) * v[0] + std::sin(angle) * v[1];
+    w[1]             = -std::sin(angle) * v[0] + std::cos(angle) * v[1];
+    return w;
+  }
+
+
+
+  template <int dim>
+  void
+  BarImpact<dim>::create_coarse_mesh(Triangulation<dim, dim> &tria) const
+  {
+    const unsigned int n_across = std::max<unsigned int>(
+      1, std::lround(cells_along_length * height / length));
+    std::vector<unsigned int> repetitions(dim, n_across);
+    repetitions[0] = cells_along_length;
+    Point<dim> upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      upper[d] = (d == 0 ? length : height);
+    // colorize: x = 0 gets id 0 (the contact boundary), x = L id 1, ...
+    GridGenerator::subdivided_hyper_rectangle(
+      tria, repetitions, Point<dim>(), upper, true);
+    if (angle != 0.)
+      GridTools::transform(
+        [this](const Point<dim> &p) { return Point<dim>(rotate(p)); }, tria);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BarImpact<dim>::initial_displacement(const Point<dim> &p) const
+  {
+    Tensor<1, dim> e_x;
+    e_x[0] = 1.;
+    return initial_strain * rotate_back(p)[0] * rotate(e_x);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BarImpact<dim>::initial_velocity(const Point<dim> &) const
+  {
+    Tensor<1, dim> e_x;
+    e_x[0] = 1.;
+    return -impact_velocity * rotate(e_x);
+  }
+
+
+
+  template <int dim>
+  std::optional<RigidObstacle<dim>>
+  BarImpact<dim>::obstacle() const
+  {
+    Tensor<1, dim> e_x;
+    e_x[0] = 1.;
+    RigidObstacle<dim> wall;
+    wall.point  = Point<dim>(-initial_gap * rotate(e_x));
+    wall.normal = rotate(e_x);
+    return wall;
+  }
+
+
+
+  template <int dim>
+  bool
+  BarImpact<dim>::has_exact_solution() const
+  {
+    // the 1D solution is exact for nu = 0 and an elastic bar
+    return mat.poissons_ratio == 0. && !mat.is_viscous() &&
+           initial_strain == 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  BarImpact<dim>::reference_contact_pressure() const
+  {
+    return mat.density * mat.bar_wave_speed() * impact_velocity;
+  }
+
+
+
+  template <int dim>
+  ExactValues<dim>
+  BarImpact<dim>::exact_solution(const Point<dim> &p, const double t) const
+  {
+    const double c  = mat.bar_wave_speed();
+    const double v0 = impact_velocity;
+    const double g0 = initial_gap;
+    const double x  = rotate_back(p)[0];
+    const double s  = t - g0 / v0;
+    const double T  = 2. * length / c;
+
+    double u = 0., v = 0., dudx = 0.;
+    if (s <= 0.)
+      {
+        u = -v0 * t;
+        v = -v0;
+      }
+    else if (s <= T)
+      {
+        // u = -g0 - v0 min(x/c, s, T - s)
+        const double a = x / c, b = s, d = T - s;
+        if (a <= b && a <= d)
+          {
+            u    = -g0 - v0 * a;
+            dudx = -v0 / c;
+          }
+        else if (b <= d)
+          {
+            u = -g0 - v0 * b;
+            v = -v0;
+          }
+        else
+          {
+            u = -g0 - v0 * d;
+            v = v0;
+          }
+      }
+    else
+      {
+        u = -g0 + v0 * (s - T);
+        v = v0;
+      }
+
+    Tensor<1, dim> e_x;
+    e_x[0] = 1.;
+    const Tensor<1, dim> e = rotate(e_x);
+    ExactValues<dim>     values;
+    values.displacement          = u * e;
+    values.velocity              = v * e;
+    values.displacement_gradient = dudx * outer_product(e, e);
+    return values;
+  }
+
+  template class BarImpact<2>;
+  template class BarImpact<3>;
+} // namespace dyncontact

@@ -1,0 +1,136 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/parameters.h>
+#include <dyncontact/scene.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace dyncontact
+{
+  void
+  RunParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the simulation: 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "results",
+                      Patterns::Anything(),
+                      "Folder for the VTU/PVTU/PVD files and statistics.tsv; "
+                      "created if missing, relative to the working directory.");
+    prm.declare_entry("Polynomial degree",
+                      "1",
+                      Patterns::Integer(1, 4),
+                      "Degree p of the displacement space FE_Q(p)^dim, 1 to 4.");
+
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("Scheme",
+                      "N-CS++",
+                      Patterns::Selection("N-CI|N-CS|N-CS++"),
+                      "Time integrator: N-CI (contact-implicit Newmark, Kane "
+                      "et al.), N-CS (contact-stabilized Newmark, Deuflhard, "
+                      "Krause and Ertel) or N-CS++ (the improved "
+                      "contact-stabilized Newmark method, eq. (12)).");
+    prm.declare_entry("Time step",
+                      "0.0125",
+                      Patterns::Double(),
+                      "Time step tau, in s (> 0).");
+    prm.declare_entry("End time",
+                      "2.5",
+                      Patterns::Double(),
+                      "Final time T, in s (>= 0). If T is not a multiple of "
+                      "tau, the last step ends after T.");
+    prm.declare_entry("Mass matrix",
+                      "lumped",
+                      Patterns::Selection("lumped|consistent"),
+                      "lumped: diagonal, by Gauss-Lobatto (nodal) quadrature; "
+                      "consistent: by Gauss quadrature.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Initial global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Number of global refinements of the scene's coarse "
+                      "mesh, 0 to 12.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Output interval",
+                      "0.05",
+                      Patterns::Double(),
+                      "Time between two VTU outputs, in s (>= 0; 0 writes "
+                      "every step). statistics.tsv gets every step.");
+    prm.declare_entry("Write vtu",
+                      "true",
+                      Patterns::Bool(),
+                      "Whether to write VTU/PVTU files and solution.pvd.");
+    prm.leave_subsection();
+
+    Material::declare_parameters(prm);
+    ActiveSetSolver::Parameters::declare_parameters(prm);
+    declare_scene_parameters(prm);
+  }
+
+
+
+  namespace
+  {
+    std::string
+    number(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  void
+  RunParameters::parse_parameters(ParameterHandler &prm)
+  {
+    dimension        = prm.get_integer("Dimension");
+    output_directory = prm.get("Output directory");
+    degree           = prm.get_integer("Polynomial degree");
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Output directory must not be empty."));
+
+    prm.enter_subsection("Time integration");
+    scheme      = scheme_from_string(prm.get("Scheme"));
+    time_step   = prm.get_double("Time step");
+    end_time    = prm.get_double("End time");
+    lumped_mass = (prm.get("Mass matrix") == "lumped");
+    prm.leave_subsection();
+    AssertThrow(std::isfinite(time_step) && time_step > 0.,
+                ExcMessage("Time integration/Time step must be a finite "
+                           "number > 0 (s); got " +
+                           number(time_step) + "."));
+    AssertThrow(std::isfinite(end_time) && end_time >= 0.,
+                ExcMessage("Time integration/End time must be a finite "
+                           "number >= 0 (s); got " +
+                           number(end_time) + "."));
+    AssertThrow(end_time / time_step < 1e8,
+                ExcMessage("Time integration: End time / Time step = " +
+                           number(end_time / time_step) +
+                           " steps; at most 1e8 steps are allowed."));
+
+    prm.enter_subsection("Mesh");
+    initial_refinements = prm.get_integer("Initial global refinements");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_interval = prm.get_double("Output interval");
+    write_vtu       = prm.get_bool("Write vtu");
+    prm.leave_subsection();
+    AssertThrow(std::isfinite(output_interval) && output_interval >= 0.,
+                ExcMessage("Output/Output interval must be a finite number "
+                           ">= 0 (s); got " +
+                           number(output_interval) + "."));
+
+    material.parse_parameters(prm);
+    solver.parse_parameters(prm);
+  }
+} // namespace dyncontact

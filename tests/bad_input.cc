@@ -1,0 +1,140 @@
+// Bad input given to the dyncontact executable itself: every case must end
+// with a non-zero exit status and a message that names the parameter and the
+// allowed range (or the file), and no backtrace. Also: without an argument
+// and with --help the program prints every parameter with its documentation
+// and exits with status 0.
+
+#include <sys/wait.h>
+
+#include "tests.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace
+{
+  struct Outcome
+  {
+    int         status;
+    std::string text;
+  };
+
+  Outcome
+  run_program(const std::string &arguments)
+  {
+    const std::string command =
+      std::string(DYNCONTACT_EXECUTABLE) + " " + arguments + " 2>&1";
+    FILE       *pipe = popen(command.c_str(), "r");
+    std::string text;
+    char        buffer[4096];
+    while (fgets(buffer, sizeof(buffer), pipe) != nullptr)
+      text += buffer;
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+  }
+
+  const std::string valid = "set Dimension = 2\n"
+                            "subsection Time integration\n"
+                            "  set End time = 0.01\n"
+                            "end\n"
+                            "subsection Output\n"
+                            "  set Write vtu = false\n"
+                            "end\n";
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  const std::vector<std::pair<std::string, std::string>> cases = {
+    {"unknown_key", "subsection Material\n  set Young modulus = 3\nend\n"},
+    {"unknown_subsection", "subsection Materials\nend\n"},
+    {"youngs_modulus_zero", "subsection Material\n  set Young's modulus = 0\nend\n"},
+    {"youngs_modulus_negative",
+     "subsection Material\n  set Young's modulus = -2\nend\n"},
+    {"poisson_half", "subsection Material\n  set Poisson's ratio = 0.5\nend\n"},
+    {"poisson_minus_one",
+     "subsection Material\n  set Poisson's ratio = -1\nend\n"},
+    {"density_zero", "subsection Material\n  set Density = 0\nend\n"},
+    {"viscosity_negative",
+     "subsection Material\n  set Viscous shear modulus = -1\nend\n"},
+    {"time_step_zero",
+     "subsection Time integration\n  set Time step = 0\nend\n"},
+    {"time_step_negative",
+     "subsection Time integration\n  set Time step = -0.1\nend\n"},
+    {"time_step_not_a_number",
+     "subsection Time integration\n  set Time step = abc\nend\n"},
+    {"end_time_negative",
+     "subsection Time integration\n  set End time = -1\nend\n"},
+    {"unknown_scheme", "subsection Time integration\n  set Scheme = RK4\nend\n"},
+    {"unknown_mass_matrix",
+     "subsection Time integration\n  set Mass matrix = diagonal\nend\n"},
+    {"unknown_scene", "subsection Scene\n  set Name = pendulum\nend\n"},
+    {"dimension_four", "set Dimension = 4\n"},
+    {"bar_length_zero", "subsection Scene\n  set Length = 0\nend\n"},
+    {"syntax_error", "subsection Material\n  Young's modulus 3\nend\n"},
+    {"unclosed_subsection", "subsection Material\n"},
+    {"output_directory_unwritable", "set Output directory = a_file/sub\n"},
+  };
+  std::ofstream("a_file") << "not a directory\n";
+
+  for (const auto &[name, text] : cases)
+    {
+      const std::string file = name + ".prm";
+      std::ofstream(file) << valid << text;
+      const Outcome outcome = run_program(file);
+      const bool    clean =
+        outcome.text.find("dyncontact: error:") != std::string::npos &&
+        outcome.text.find("Stacktrace") == std::string::npos &&
+        outcome.text.find("An error occurred in") == std::string::npos;
+      log() << name << ": exit status non-zero: "
+            << check(outcome.status != 0) << ", clean message: "
+            << check(clean) << "\n"
+            << outcome.text.substr(outcome.text.find("dyncontact: error:"))
+            << "\n";
+    }
+
+  // a missing file and a directory instead of a file
+  std::filesystem::create_directories("a_directory.prm");
+  for (const std::string file : {"missing.prm", "a_directory.prm"})
+    {
+      const Outcome outcome = run_program(file);
+      log() << file << ": exit status non-zero: "
+            << check(outcome.status != 0) << "\n"
+            << outcome.text << "\n";
+    }
+
+  // the valid base input runs
+  std::ofstream("valid.prm") << valid;
+  log() << "valid input: exit status zero: "
+        << check(run_program("valid.prm").status == 0) << "\n";
+
+  // no argument, and --help: every parameter with documentation and units
+  for (const std::string arguments : {"", "--help"})
+    {
+      const Outcome outcome = run_program(arguments);
+      bool          all     = outcome.status == 0;
+      for (const std::string entry : {"set Dimension",
+                                      "set Output directory",
+                                      "set Polynomial degree",
+                                      "subsection Scene",
+                                      "set Name",
+                                      "set Initial gap",
+                                      "set Scheme",
+                                      "set Time step",
+                                      "set End time",
+                                      "set Mass matrix",
+                                      "set Young's modulus",
+                                      "set Poisson's ratio",
+                                      "set Density",
+                                      "set Viscous shear modulus",
+                                      "in Pa",
+                                      "in kg/m^3",
+                                      "in s (> 0)"})
+        all = all && outcome.text.find(entry) != std::string::npos;
+      log() << "'dyncontact " << arguments
+            << "' lists every parameter with units: " << check(all) << "\n";
+    }
+}

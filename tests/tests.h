@@ -1,0 +1,126 @@
+// Helpers shared by the tests: build parameter texts, run the program's
+// library, summarise statistics, and print a deal.II-style "output" file
+// (rank 0 only) with few enough digits to be stable across machines.
+#ifndef dyncontact_tests_h
+#define dyncontact_tests_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <dyncontact/run.h>
+#include <dyncontact/statistics.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace testing
+{
+  using dyncontact::Statistics;
+
+  /// The file "output" on rank 0, a null stream elsewhere.
+  inline std::ostream &
+  log()
+  {
+    static std::ofstream file;
+    static std::ostringstream sink;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      {
+        sink.str("");
+        return sink;
+      }
+    if (!file.is_open())
+      file.open("output");
+    return file;
+  }
+
+  /// A number with @p digits significant digits.
+  inline std::string
+  fmt(const double x, const int digits = 3)
+  {
+    std::ostringstream s;
+    s << std::setprecision(digits) << (std::abs(x) < 1e-300 ? 0. : x);
+    return s.str();
+  }
+
+  /// "OK" or "FAILED", so that a failed check changes the output.
+  inline std::string
+  check(const bool ok)
+  {
+    return ok ? "OK" : "FAILED";
+  }
+
+  /// The bar impact of prm/bar_impact.prm (E = rho = v0 = L = 1, g0 = 0.1,
+  /// H = 0.1) with the given scheme, cells along the length, time step and
+  /// end time; @p extra is appended (later entries override earlier ones).
+  inline std::string
+  bar_prm(const unsigned int dim,
+          const std::string &scheme,
+          const unsigned int cells,
+          const double       tau,
+          const double       end_time,
+          const std::string &extra = "")
+  {
+    std::ostringstream s;
+    s << std::setprecision(17);
+    s << "set Dimension = " << dim << "\n"
+      << "set Output directory = output-" << scheme << "-" << cells << "\n"
+      << "subsection Scene\n  set Name = bar impact\n  set Length = 1\n"
+      << "  set Height = 0.1\n  set Impact velocity = 1\n"
+      << "  set Initial gap = 0.1\n  set Cells along length = " << cells
+      << "\nend\n"
+      << "subsection Material\n  set Young's modulus = 1\n"
+      << "  set Poisson's ratio = 0\n  set Density = 1\nend\n"
+      << "subsection Time integration\n  set Scheme = " << scheme
+      << "\n  set Time step = " << tau << "\n  set End time = " << end_time
+      << "\n  set Mass matrix = lumped\nend\n"
+      << "subsection Output\n  set Write vtu = false\nend\n"
+      << extra;
+    return s.str();
+  }
+
+  inline Statistics
+  run(const std::string &prm)
+  {
+    return dyncontact::run_simulation(prm, MPI_COMM_WORLD, "test input");
+  }
+
+  /// First and last time with active contact rows (-1 if none).
+  inline std::pair<double, double>
+  contact_interval(const Statistics &s)
+  {
+    const auto t = s.column("time"), a = s.column("active_nodes");
+    double     begin = -1., end = -1.;
+    for (unsigned int i = 0; i < t.size(); ++i)
+      if (a[i] > 0)
+        {
+          if (begin < 0)
+            begin = t[i];
+          end = t[i];
+        }
+    return {begin, end};
+  }
+
+  inline double
+  max_of(const std::vector<double> &v)
+  {
+    return *std::max_element(v.begin(), v.end());
+  }
+
+  /// max_n (E^{n+1} + W^{n+1}) - (E^n + W^n): positive means energy growth.
+  inline double
+  max_energy_increase(const Statistics &s)
+  {
+    const auto e = s.column("energy_total"), w = s.column("dissipation_viscous");
+    double     growth = -1e300;
+    for (unsigned int i = 1; i < e.size(); ++i)
+      growth = std::max(growth, (e[i] + w[i]) - (e[i - 1] + w[i - 1]));
+    return growth;
+  }
+} // namespace testing
+
+#endif
