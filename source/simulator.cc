@@ -446,7 +446,7 @@ namespace dyncontact
     // the exact solution has kinks and jumps inside cells: an iterated
     // Gauss rule (no point at cell or sub-cell midpoints) integrates them
     // robustly
-    const QIterated<dim> quadrature(QGauss<1>(fe.degree + 1), 4);
+    const QIterated<dim> quadrature(QGauss<1>(fe.degree + 1), 2);
     FEValues<dim>     fe_values(mapping,
                             fe,
                             quadrature,

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(libdeal.ii-dev numdiff ninja-build openmpi-bin perl
-          python3 python3-matplotlib paraview xvfb xauth)
+          python3 python3-matplotlib paraview python3-paraview xvfb xauth)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \

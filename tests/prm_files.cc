@@ -1,0 +1,34 @@
+// Every example in prm/ is a valid input: each is parsed and set up (mesh,
+// matrices, contact rows, initial step) with the end time set to zero.
+
+#include "tests.h"
+
+#include <filesystem>
+#include <set>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  std::set<std::filesystem::path> files;
+  for (const auto &entry :
+       std::filesystem::directory_iterator(DYNCONTACT_PRM_DIR))
+    if (entry.path().extension() == ".prm")
+      files.insert(entry.path());
+
+  for (const auto &file : files)
+    {
+      std::ifstream     in(file);
+      std::stringstream text;
+      text << in.rdbuf()
+           << "\nset Output directory = results-" << file.stem().string()
+           << "\nsubsection Time integration\n  set End time = 0\nend\n"
+           << "subsection Output\n  set Write vtu = false\nend\n";
+      const Statistics s = run(text.str());
+      log() << file.filename().string() << ": parsed and set up, "
+            << check(s.rows.size() == 1) << ", energy "
+            << fmt(s.column("energy_total")[0], 3) << "\n";
+    }
+}
