@@ -47,6 +47,22 @@ namespace dyncontact
                       "Bar impact: a uniform initial axial strain eps0 (u0 = "
                       "eps0 x e_x, dimensionless, > -1); nonzero values make "
                       "the bar vibrate (the exact solution is then unknown).");
+    prm.declare_entry("Fixed far end",
+                      "false",
+                      Patterns::Bool(),
+                      "Bar impact: whether the end x = L is clamped "
+                      "(homogeneous Dirichlet data, all components).");
+    prm.declare_entry("Body force",
+                      "0",
+                      Patterns::Double(),
+                      "Bar impact: a constant body force density along the "
+                      "bar's axis e_x, in N/m^3.");
+    prm.declare_entry("End traction",
+                      "0",
+                      Patterns::Double(),
+                      "Bar impact: a constant traction along the bar's axis "
+                      "e_x on the end x = 0 (a Neumann boundary that is also "
+                      "the contact boundary), in Pa.");
     prm.declare_entry("Rotation angle",
                       "0",
                       Patterns::Double(),
@@ -69,6 +85,9 @@ namespace dyncontact
     initial_gap        = prm.get_double("Initial gap");
     cells_along_length = prm.get_integer("Cells along length");
     initial_strain     = prm.get_double("Initial strain");
+    fixed_far_end      = prm.get_bool("Fixed far end");
+    axial_body_force   = prm.get_double("Body force");
+    end_traction       = prm.get_double("End traction");
     angle              = prm.get_double("Rotation angle") * M_PI / 180.;
     prm.leave_subsection();
 
@@ -76,9 +95,12 @@ namespace dyncontact
                 ExcMessage("Scene/Length must be a finite number > 0 (m)."));
     AssertThrow(std::isfinite(height) && height > 0.,
                 ExcMessage("Scene/Height must be a finite number > 0 (m)."));
-    AssertThrow(std::isfinite(impact_velocity) && impact_velocity > 0.,
+    AssertThrow(std::isfinite(impact_velocity) && impact_velocity >= 0.,
                 ExcMessage(
-                  "Scene/Impact velocity must be a finite number > 0 (m/s)."));
+                  "Scene/Impact velocity must be a finite number >= 0 (m/s)."));
+    AssertThrow(std::isfinite(axial_body_force) && std::isfinite(end_traction),
+                ExcMessage("Scene/Body force and Scene/End traction must be "
+                           "finite numbers."));
     AssertThrow(std::isfinite(initial_gap) && initial_gap >= 0.,
                 ExcMessage(
                   "Scene/Initial gap must be a finite number >= 0 (m)."));
@@ -137,6 +159,41 @@ namespace dyncontact
 
 
   template <int dim>
+  std::vector<types::boundary_id>
+  BarImpact<dim>::dirichlet_boundary_ids() const
+  {
+    if (fixed_far_end)
+      return {1};
+    return {};
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+  BarImpact<dim>::neumann_tractions() const
+  {
+    if (end_traction == 0.)
+      return {};
+    Tensor<1, dim> e_x;
+    e_x[0] = 1.;
+    return {{types::boundary_id(0), end_traction * rotate(e_x)}};
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BarImpact<dim>::body_force() const
+  {
+    Tensor<1, dim> e_x;
+    e_x[0] = 1.;
+    return axial_body_force * rotate(e_x);
+  }
+
+
+
+  template <int dim>
   Tensor<1, dim>
   BarImpact<dim>::initial_displacement(const Point<dim> &p) const
   {
@@ -178,7 +235,8 @@ namespace dyncontact
   {
     // the 1D solution is exact for nu = 0 and an elastic bar
     return mat.poissons_ratio == 0. && !mat.is_viscous() &&
-           initial_strain == 0.;
+           initial_strain == 0. && impact_velocity > 0. && !fixed_far_end &&
+           axial_body_force == 0. && end_traction == 0.;
   }
 
 

@@ -111,6 +111,12 @@ namespace testing
     return *std::max_element(v.begin(), v.end());
   }
 
+  inline double
+  min_of(const std::vector<double> &v)
+  {
+    return *std::min_element(v.begin(), v.end());
+  }
+
   /// max_n (E^{n+1} + W^{n+1}) - (E^n + W^n): positive means energy growth.
   inline double
   max_energy_increase(const Statistics &s)

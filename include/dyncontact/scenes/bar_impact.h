@@ -11,7 +11,9 @@ namespace dyncontact
    * 2D and 3D: contact starts at g0/v0, lasts 2L/c (c = sqrt(E/rho)), the
    * contact pressure is rho c v0, and the bar leaves with +v0. The whole
    * scene can be rotated about the z axis ("Rotation angle"), which turns
-   * the wall normal away from the coordinate axes.
+   * the wall normal away from the coordinate axes. Optionally the far end
+   * x = L is clamped and the bar is loaded by an axial body force or an axial
+   * traction on its end x = 0.
    */
   template <int dim>
   class BarImpact : public Scene<dim>
@@ -42,6 +44,15 @@ namespace dyncontact
     {
       return {0};
     }
+
+    std::vector<types::boundary_id>
+    dirichlet_boundary_ids() const override;
+
+    std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+    neumann_tractions() const override;
+
+    Tensor<1, dim>
+    body_force() const override;
 
     Tensor<1, dim>
     initial_displacement(const Point<dim> &x) const override;
@@ -75,6 +86,9 @@ namespace dyncontact
     double       initial_gap;
     unsigned int cells_along_length;
     double       initial_strain;
+    bool         fixed_far_end;
+    double       axial_body_force;
+    double       end_traction;
     double       angle; // radians
   };
 } // namespace dyncontact
