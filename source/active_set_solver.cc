@@ -98,7 +98,9 @@ namespace dyncontact
 
 
   void
-  ActiveSetSolver::set_matrix(const MatrixType &matrix, const bool is_diagonal)
+  ActiveSetSolver::set_matrix(const MatrixType &matrix,
+                              const bool        is_diagonal,
+                              const MatrixType *preconditioner_matrix)
   {
     H             = &matrix;
     H_is_diagonal = is_diagonal;
@@ -147,8 +149,10 @@ namespace dyncontact
         data.higher_order_elements = false;
         data.smoother_sweeps       = 2;
         data.aggregation_threshold = 0.02;
+        data.constant_modes        = constant_modes;
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg->initialize(matrix, data);
+        amg->initialize(preconditioner_matrix ? *preconditioner_matrix : matrix,
+                        data);
       }
   }
 

@@ -11,6 +11,53 @@
 
 namespace dyncontact
 {
+  BarSolution1D
+  exact_bar_impact_1d(const double x,
+                      const double t,
+                      const double length,
+                      const double c,
+                      const double v0,
+                      const double g0)
+  {
+    const double s = t - g0 / v0;
+    const double T = 2. * length / c;
+
+    BarSolution1D bar{0., 0., 0.};
+    if (s <= 0.)
+      {
+        bar.displacement = -v0 * t;
+        bar.velocity     = -v0;
+      }
+    else if (s <= T)
+      {
+        // u = -g0 - v0 min(x/c, s, T - s)
+        const double a = x / c, b = s, d = T - s;
+        if (a <= b && a <= d)
+          {
+            bar.displacement = -g0 - v0 * a;
+            bar.strain       = -v0 / c;
+          }
+        else if (b <= d)
+          {
+            bar.displacement = -g0 - v0 * b;
+            bar.velocity     = -v0;
+          }
+        else
+          {
+            bar.displacement = -g0 - v0 * d;
+            bar.velocity     = v0;
+          }
+      }
+    else
+      {
+        bar.displacement = -g0 + v0 * (s - T);
+        bar.velocity     = v0;
+      }
+    return bar;
+  }
+
+
+
   template <int dim>
   void
   BarImpact<dim>::declare_parameters(ParameterHandler &prm)
@@ -151,6 +198,9 @@ namespace dyncontact
     // colorize: x = 0 gets id 0 (the contact boundary), x = L id 1, ...
     GridGenerator::subdivided_hyper_rectangle(
       tria, repetitions, Point<dim>(), upper, true);
+    // colorize also numbers the cells; the bar is body 0
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(0);
     if (angle != 0.)
       GridTools::transform(
         [this](const Point<dim> &p) { return Point<dim>(rotate(p)); }, tria);
@@ -159,11 +209,11 @@ namespace dyncontact
 
 
   template <int dim>
-  std::vector<types::boundary_id>
-  BarImpact<dim>::dirichlet_boundary_ids() const
+  std::vector<DirichletBoundary>
+  BarImpact<dim>::dirichlet_boundaries() const
   {
     if (fixed_far_end)
-      return {1};
+      return {DirichletBoundary{1}};
     return {};
   }
 
@@ -184,7 +234,7 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  BarImpact<dim>::body_force() const
+  BarImpact<dim>::body_force(const unsigned int) const
   {
     Tensor<1, dim> e_x;
     e_x[0] = 1.;
@@ -254,44 +304,14 @@ namespace dyncontact
   ExactValues<dim>
   BarImpact<dim>::exact_solution(const Point<dim> &p, const double t) const
   {
-    const double c  = mat.bar_wave_speed();
-    const double v0 = impact_velocity;
-    const double g0 = initial_gap;
-    const double x  = rotate_back(p)[0];
-    const double s  = t - g0 / v0;
-    const double T  = 2. * length / c;
-
-    double u = 0., v = 0., dudx = 0.;
-    if (s <= 0.)
-      {
-        u = -v0 * t;
-        v = -v0;
-      }
-    else if (s <= T)
-      {
-        // u = -g0 - v0 min(x/c, s, T - s)
-        const double a = x / c, b = s, d = T - s;
-        if (a <= b && a <= d)
-          {
-            u    = -g0 - v0 * a;
-            dudx = -v0 / c;
-          }
-        else if (b <= d)
-          {
-            u = -g0 - v0 * b;
-            v = -v0;
-          }
-        else
-          {
-            u = -g0 - v0 * d;
-            v = v0;
-          }
-      }
-    else
-      {
-        u = -g0 + v0 * (s - T);
-        v = v0;
-      }
+    const BarSolution1D bar = exact_bar_impact_1d(rotate_back(p)[0],
+                                                  t,
+                                                  length,
+                                                  mat.bar_wave_speed(),
+                                                  impact_velocity,
+                                                  initial_gap);
+    const double        u = bar.displacement, v = bar.velocity,
+                 dudx = bar.strain;
 
     Tensor<1, dim> e_x;
     e_x[0] = 1.;

@@ -28,11 +28,13 @@ namespace dyncontact
     prm.enter_subsection("Time integration");
     prm.declare_entry("Scheme",
                       "N-CS++",
-                      Patterns::Selection("N-CI|N-CS|N-CS++"),
+                      Patterns::Selection("N-CI|N-CS|N-CS++|static"),
                       "Time integrator: N-CI (contact-implicit Newmark, Kane "
                       "et al.), N-CS (contact-stabilized Newmark, Deuflhard, "
-                      "Krause and Ertel) or N-CS++ (the improved "
-                      "contact-stabilized Newmark method, eq. (12)).");
+                      "Krause and Ertel), N-CS++ (the improved "
+                      "contact-stabilized Newmark method, eq. (12)), or "
+                      "static (the quasi-static limit: min 1/2 v^T A v - "
+                      "f^T v on K_h, solved once).");
     prm.declare_entry("Time step",
                       "0.0125",
                       Patterns::Double(),
@@ -69,7 +71,8 @@ namespace dyncontact
                       "Whether to write VTU/PVTU files and solution.pvd.");
     prm.leave_subsection();
 
-    Material::declare_parameters(prm);
+    Material::declare_parameters(prm, "Material");
+    Material::declare_parameters(prm, "Material of body 2");
     ActiveSetSolver::Parameters::declare_parameters(prm);
     declare_scene_parameters(prm);
   }
@@ -130,7 +133,9 @@ namespace dyncontact
                            ">= 0 (s); got " +
                            number(output_interval) + "."));
 
-    material.parse_parameters(prm);
+    materials.resize(2);
+    materials[0].parse_parameters(prm, "Material");
+    materials[1].parse_parameters(prm, "Material of body 2");
     solver.parse_parameters(prm);
   }
 } // namespace dyncontact

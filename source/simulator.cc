@@ -19,6 +19,7 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <dyncontact/contact_mapping.h>
 #include <dyncontact/simulator.h>
 
 #include <algorithm>
@@ -36,10 +37,9 @@ namespace dyncontact
     class VonMisesPostprocessor : public DataPostprocessorScalar<dim>
     {
     public:
-      VonMisesPostprocessor(const Material &material)
+      VonMisesPostprocessor(const Scene<dim> &scene)
         : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
-        , mu(material.mu())
-        , lambda(material.lambda())
+        , scene(scene)
       {}
 
       void
@@ -47,6 +47,9 @@ namespace dyncontact
         const DataPostprocessorInputs::Vector<dim> &inputs,
         std::vector<Vector<double>> &computed_quantities) const override
       {
+        const auto      cell     = inputs.template get_cell<dim>();
+        const Material &material = scene.material(cell->material_id());
+        const double    mu = material.mu(), lambda = material.lambda();
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
             Tensor<2, dim> grad;
@@ -65,7 +68,7 @@ namespace dyncontact
       }
 
     private:
-      const double mu, lambda;
+      const Scene<dim> &scene;
     };
   } // namespace
 
@@ -82,7 +85,7 @@ namespace dyncontact
                                           pcout,
                                           TimerOutput::never,
                                           TimerOutput::wall_times))
-    , scene(create_scene<dim>(prm, parameters.material))
+    , scene(create_scene<dim>(prm, parameters.materials))
     , triangulation(comm)
     , fe(FE_Q<dim>(parameters.degree), dim)
     , dof_handler(triangulation)
@@ -110,14 +113,23 @@ namespace dyncontact
     mesh_constraints.clear();
     mesh_constraints.reinit(locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, mesh_constraints);
-    for (const auto id : scene->dirichlet_boundary_ids())
-      VectorTools::interpolate_boundary_values(
-        mapping,
-        dof_handler,
-        id,
-        Functions::ZeroFunction<dim>(dim),
-        mesh_constraints);
+    for (const auto &boundary : scene->dirichlet_boundaries())
+      {
+        std::vector<bool> components(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          components[d] = boundary.components[d];
+        VectorTools::interpolate_boundary_values(
+          mapping,
+          dof_handler,
+          boundary.id,
+          Functions::ZeroFunction<dim>(dim),
+          mesh_constraints,
+          ComponentMask(components));
+      }
     mesh_constraints.close();
+    DoFTools::extract_constant_modes(dof_handler,
+                                     ComponentMask(dim, true),
+                                     constant_modes);
 
     // M, A, B share the sparsity pattern of the unconstrained operator;
     // constraints are applied by the active-set solver, not by assembly
@@ -129,7 +141,10 @@ namespace dyncontact
                                                locally_relevant);
     mass_matrix.reinit(locally_owned, locally_owned, dsp, comm);
     stiffness_matrix.reinit(locally_owned, locally_owned, dsp, comm);
-    if (scene->material().is_viscous())
+    bool viscous = false;
+    for (unsigned int b = 0; b < scene->n_bodies(); ++b)
+      viscous = viscous || scene->material(b).is_viscous();
+    if (viscous)
       viscous_matrix.reinit(locally_owned, locally_owned, dsp, comm);
     else
       viscous_matrix.clear();
@@ -139,12 +154,49 @@ namespace dyncontact
     u.reinit(locally_owned, comm);
     udot.reinit(locally_owned, comm);
     u_old.reinit(locally_owned, comm);
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        ComponentMask mask(dim, false);
-        mask.set(d, true);
-        component_dofs[d] = DoFTools::extract_dofs(dof_handler, mask);
-      }
+    // component-0 system DoF -> scalar DoF of the locally owned nodes
+    owned_system0_to_scalar.clear();
+    {
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> scalar_dofs(
+        scalar_fe.n_dofs_per_cell());
+      auto scalar_cell = scalar_dof_handler.begin_active();
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(dofs);
+              scalar_cell->get_dof_indices(scalar_dofs);
+              for (unsigned int node = 0; node < scalar_dofs.size(); ++node)
+                {
+                  const auto dof0 = dofs[fe.component_to_system_index(0, node)];
+                  if (locally_owned.is_element(dof0))
+                    owned_system0_to_scalar[dof0] = scalar_dofs[node];
+                }
+            }
+          ++scalar_cell;
+        }
+    }
+
+    // locally owned DoFs of each body and component (for the momentum)
+    body_component_dofs.assign(scene->n_bodies(),
+                               std::vector<IndexSet>(dim, IndexSet(dof_handler.n_dofs())));
+    {
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (locally_owned.is_element(dofs[i]))
+                body_component_dofs[cell->material_id()]
+                                   [fe.system_to_component_index(i).first]
+                                     .add_index(dofs[i]);
+          }
+      for (auto &body : body_component_dofs)
+        for (auto &set : body)
+          set.compress();
+    }
 
     pcout << "   cells: " << triangulation.n_global_active_cells()
           << ", DoFs: " << dof_handler.n_dofs() << std::endl;
@@ -158,14 +210,11 @@ namespace dyncontact
   {
     TimerOutput::Scope t(*timer, "assembly");
 
-    const Material &material    = scene->material();
-    const bool      viscous     = material.is_viscous();
-    const double    mu          = material.mu();
-    const double    lambda      = material.lambda();
-    const double    rho         = material.density;
-    const auto      body_force  = scene->body_force();
-    const auto      tractions   = scene->neumann_tractions();
-    const auto      contact_ids = scene->contact_boundary_ids();
+    bool viscous = false;
+    for (unsigned int b = 0; b < scene->n_bodies(); ++b)
+      viscous = viscous || scene->material(b).is_viscous();
+    const auto tractions   = scene->neumann_tractions();
+    const auto contact_ids = all_contact_boundary_ids();
 
     const QGauss<dim> quadrature(fe.degree + 1);
     // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes the
@@ -214,6 +263,11 @@ namespace dyncontact
           cell_viscous       = 0.;
           cell_load          = 0.;
           cell_boundary_mass = 0.;
+          const Material &material   = scene->material(cell->material_id());
+          const double    mu         = material.mu();
+          const double    lambda     = material.lambda();
+          const double    rho        = material.density;
+          const auto      body_force = scene->body_force(cell->material_id());
           fe_values.reinit(cell);
           mass_values.reinit(cell);
 
@@ -232,7 +286,7 @@ namespace dyncontact
                       const double ee = eps[i] * eps[j];
                       const double dd = div[i] * div[j];
                       cell_stiffness(i, j) += (2. * mu * ee + lambda * dd) * JxW;
-                      if (viscous)
+                      if (material.is_viscous())
                         cell_viscous(i, j) +=
                           (2. * material.viscous_shear_modulus * ee +
                            material.viscous_lambda * dd) *
@@ -302,6 +356,21 @@ namespace dyncontact
 
 
   template <int dim>
+  std::vector<types::boundary_id>
+  Simulator<dim>::all_contact_boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids = scene->contact_boundary_ids();
+    for (const auto &pair : scene->contact_pairs())
+      {
+        ids.insert(ids.end(), pair.first_side.begin(), pair.first_side.end());
+        ids.insert(ids.end(), pair.second_side.begin(), pair.second_side.end());
+      }
+    return ids;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::make_contact_rows()
   {
@@ -309,84 +378,146 @@ namespace dyncontact
 
     rows.rows.clear();
     row_scalar_dofs.clear();
-    const auto obstacle = scene->obstacle();
-    if (!obstacle)
-      return;
-
-    const auto         contact_ids = scene->contact_boundary_ids();
-    const unsigned int my_rank     = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
 
     VectorType w_ghosted(locally_owned, locally_relevant, comm);
     w_ghosted = boundary_mass;
 
-    // (row, scalar DoF of its node) for the nodes owned here
-    std::vector<std::pair<ContactRow, types::global_dof_index>> local_rows;
-    std::set<types::global_dof_index>     seen;
-    std::vector<types::global_dof_index>  dofs(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index>  scalar_dofs(scalar_fe.n_dofs_per_cell());
-    const auto &unit_points = scalar_fe.get_unit_support_points();
+    auto contains = [](const std::vector<types::boundary_id> &ids,
+                       const types::boundary_id               id) {
+      return std::find(ids.begin(), ids.end(), id) != ids.end();
+    };
 
-    auto scalar_cell = scalar_dof_handler.begin_active();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_locally_owned())
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                std::find(contact_ids.begin(),
-                          contact_ids.end(),
-                          cell->face(f)->boundary_id()) != contact_ids.end())
-              {
-                cell->get_dof_indices(dofs);
-                scalar_cell->get_dof_indices(scalar_dofs);
-                for (unsigned int node = 0; node < scalar_fe.n_dofs_per_cell();
-                     ++node)
+    // Calls f(x, dofs, scalar dof) once for every locally owned, non-hanging
+    // node on the boundary parts @p ids.
+    auto for_each_boundary_node =
+      [&](const std::vector<types::boundary_id> &ids, const auto &f) {
+        std::set<types::global_dof_index>    seen;
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        std::vector<types::global_dof_index> scalar_dofs(
+          scalar_fe.n_dofs_per_cell());
+        const auto &unit_points = scalar_fe.get_unit_support_points();
+        auto        scalar_cell = scalar_dof_handler.begin_active();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            if (cell->is_locally_owned())
+              for (const unsigned int face : cell->face_indices())
+                if (cell->face(face)->at_boundary() &&
+                    contains(ids, cell->face(face)->boundary_id()))
                   {
-                    if (!scalar_fe.has_support_on_face(node, f))
-                      continue;
-                    const auto dof0 = dofs[fe.component_to_system_index(0, node)];
-                    if (!locally_owned.is_element(dof0) || seen.count(dof0))
-                      continue;
-                    seen.insert(dof0);
-
-                    ContactRow row;
-                    row.n_components = dim;
-                    row.owner        = my_rank;
-                    const Point<dim> x =
-                      mapping.transform_unit_to_real_cell(cell, unit_points[node]);
-                    const Tensor<1, dim> nu = -obstacle->normal;
-                    for (unsigned int d = 0; d < dim; ++d)
+                    cell->get_dof_indices(dofs);
+                    scalar_cell->get_dof_indices(scalar_dofs);
+                    for (unsigned int node = 0;
+                         node < scalar_fe.n_dofs_per_cell();
+                         ++node)
                       {
-                        row.entries.emplace_back(
-                          dofs[fe.component_to_system_index(d, node)], nu[d]);
-                        row.normal[d]   = nu[d];
-                        row.position[d] = x[d];
+                        if (!scalar_fe.has_support_on_face(node, face))
+                          continue;
+                        std::array<types::global_dof_index, dim> node_dofs;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          node_dofs[d] =
+                            dofs[fe.component_to_system_index(d, node)];
+                        if (!locally_owned.is_element(node_dofs[0]) ||
+                            seen.count(node_dofs[0]))
+                          continue;
+                        seen.insert(node_dofs[0]);
+                        f(mapping.transform_unit_to_real_cell(
+                            cell, unit_points[node]),
+                          node_dofs,
+                          scalar_dofs[node]);
                       }
-                    row.gap    = (x - obstacle->point) * obstacle->normal;
-                    row.weight = w_ghosted(dof0);
-
-                    // eliminate the free component with the largest |nu_i|;
-                    // hanging nodes (all components constrained) get no row
-                    int best = -1;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      if (!mesh_constraints.is_constrained(row.entries[d].first) &&
-                          std::abs(nu[d]) > 1e-12 &&
-                          (best < 0 || std::abs(nu[d]) > std::abs(nu[best])))
-                        best = d;
-                    if (best < 0)
-                      continue;
-                    row.eliminated = best;
-
-                    AssertThrow(row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
-                                ExcMessage(
-                                  "The initial configuration penetrates the "
-                                  "obstacle: the node at distance " +
-                                  std::to_string(row.gap) +
-                                  " m lies inside it. Check the scene's "
-                                  "initial gap."));
-                    local_rows.emplace_back(row, scalar_dofs[node]);
                   }
+            ++scalar_cell;
+          }
+      };
+
+    // completes a row: weight, owner, eliminated component (the free one
+    // with the largest |nu_i|); false for a node without a free component
+    // (a hanging node, or a node fixed by Dirichlet data)
+    auto finish_row = [&](ContactRow &row) {
+      row.owner  = my_rank;
+      row.weight = w_ghosted(row.entries[0].first);
+      int best   = -1;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!mesh_constraints.is_constrained(row.entries[d].first) &&
+            std::abs(row.normal[d]) > 1e-12 &&
+            (best < 0 || std::abs(row.normal[d]) > std::abs(row.normal[best])))
+          best = d;
+      row.eliminated = std::max(best, 0);
+      return best >= 0;
+    };
+
+    std::vector<std::pair<ContactRow, types::global_dof_index>> local_rows;
+
+    // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
+    if (const auto obstacle = scene->obstacle())
+      for_each_boundary_node(
+        scene->contact_boundary_ids(),
+        [&](const Point<dim> &x, const auto &dofs, const auto scalar_dof) {
+          ContactRow row;
+          row.n_components = dim;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              row.entries.emplace_back(dofs[d], -obstacle->normal[d]);
+              row.normal[d]   = -obstacle->normal[d];
+              row.position[d] = x[d];
+            }
+          row.gap = (x - obstacle->point) * obstacle->normal;
+          AssertThrow(row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
+                      ExcMessage("The initial configuration penetrates the "
+                                 "obstacle: the node at (" +
+                                 Utilities::to_string(x[0]) + ", " +
+                                 Utilities::to_string(x[1]) + ", ...) lies " +
+                                 Utilities::to_string(-row.gap) +
+                                 " m inside it."));
+          if (finish_row(row))
+            local_rows.emplace_back(row, scalar_dof);
+        });
+
+    // two-body pairs: the mortar-like mapping phi_h onto the gathered master
+    // surface
+    for (const ContactPair &pair : scene->contact_pairs())
+      {
+        const std::array<std::vector<MasterFace<dim>>, 2> sides = {
+          {gather_faces(pair.first_side), gather_faces(pair.second_side)}};
+        int slave = pair.slave_side;
+        if (slave < 0)
+          {
+            // the finer side (smaller mean face size) is the slave
+            std::array<double, 2> size{{0., 0.}};
+            for (unsigned int s = 0; s < 2; ++s)
+              {
+                for (const auto &face : sides[s])
+                  size[s] += face.vertices[0].distance(face.vertices.back());
+                size[s] /= std::max<std::size_t>(sides[s].size(), 1);
               }
-        ++scalar_cell;
+            slave = (size[1] < size[0]) ? 1 : 0;
+          }
+        const ContactMapping<dim> phi(sides[1 - slave], pair.search_radius);
+        for_each_boundary_node(
+          slave == 0 ? pair.first_side : pair.second_side,
+          [&](const Point<dim> &x, const auto &dofs, const auto scalar_dof) {
+            const auto image = phi.find_image(x);
+            if (!image)
+              return;
+            AssertThrow((x - image->point) * image->master_normal >=
+                          -1e-10 * pair.search_radius,
+                        ExcMessage(
+                          "The initial configuration penetrates: the slave "
+                          "node at (" +
+                          Utilities::to_string(x[0]) + ", " +
+                          Utilities::to_string(x[1]) +
+                          ", ...) lies inside the master body by " +
+                          Utilities::to_string(image->gap) + " m."));
+            ContactRow row = make_two_body_row<dim>(
+              x, dofs, *image, phi.faces()[image->face], fe.degree);
+            if (finish_row(row))
+              local_rows.emplace_back(row, scalar_dof);
+          });
+        pcout << "   contact pair: slave is side " << slave + 1 << " ("
+              << sides[slave].size() << " faces), master side "
+              << 2 - slave << " (" << sides[1 - slave].size() << " faces)"
+              << std::endl;
       }
 
     // every rank gets all rows, in rank order
@@ -402,7 +533,59 @@ namespace dyncontact
     for (const auto &row : rows.rows)
       measure += row.weight;
     pcout << "   contact rows: " << rows.size()
-          << ", measure of Gamma_C: " << measure << std::endl;
+          << ", measure of the slave contact boundary: " << measure
+          << std::endl;
+  }
+
+
+
+  template <int dim>
+  std::vector<MasterFace<dim>>
+  Simulator<dim>::gather_faces(const std::vector<types::boundary_id> &ids) const
+  {
+    std::vector<MasterFace<dim>> local;
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
+                ids.end())
+            {
+              const auto      face = cell->face(f);
+              MasterFace<dim> master;
+              for (const unsigned int v : face->vertex_indices())
+                master.vertices.push_back(face->vertex(v));
+              master.cell_center = cell->center();
+              const unsigned int n_nodes = fe.n_dofs_per_face() / dim;
+              master.node_dofs.resize(n_nodes);
+              master.node_dof0.assign(n_nodes, numbers::invalid_dof_index);
+              face->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                {
+                  const auto [c, node] = fe.face_system_to_component_index(i);
+                  const auto dof       = face_dofs[i];
+                  auto      &entries   = master.node_dofs[node][c];
+                  if (mesh_constraints.is_constrained(dof))
+                    {
+                      // hanging: its parents; Dirichlet: nothing (fixed)
+                      for (const auto &entry :
+                           *mesh_constraints.get_constraint_entries(dof))
+                        entries.push_back(entry);
+                    }
+                  else
+                    {
+                      entries.emplace_back(dof, 1.);
+                      if (c == 0)
+                        master.node_dof0[node] = dof;
+                    }
+                }
+              local.push_back(master);
+            }
+    std::vector<MasterFace<dim>> all;
+    for (const auto &rank_faces : Utilities::MPI::all_gather(comm, local))
+      all.insert(all.end(), rank_faces.begin(), rank_faces.end());
+    return all;
   }
 
 
@@ -442,7 +625,7 @@ namespace dyncontact
   Simulator<dim>::compute_energy_error(const double time) const
   {
     // ||(e, edot)||_E^2 = 1/2 ||edot||^2_{L2(rho)} + 1/2 a(e, e) (eq. 22-24)
-    const Material   &material = scene->material();
+    const Material   &material = scene->material(0);
     // the exact solution has kinks and jumps inside cells: an iterated
     // Gauss rule (no point at cell or sub-cell midpoints) integrates them
     // robustly
@@ -493,18 +676,25 @@ namespace dyncontact
                               const double       wall_time)
   {
     TimerOutput::Scope t(*timer, "diagnostics");
-    const double       tau = parameters.time_step;
+    const double       tau          = parameters.time_step;
+    const double       force_factor = integrator->force_factor();
 
     VectorType tmp(u);
     // energies: E_kin = 1/2 udot^T M udot, E_el = 1/2 u^T A u - f^T u
     mass_matrix.vmult(tmp, udot);
     const double kinetic = 0.5 * (tmp * udot);
-    // momentum: sum of M udot over the DoFs of each component (Thm. 3.1)
-    std::vector<double> momentum(dim, 0.);
-    for (unsigned int d = 0; d < dim; ++d)
-      for (const auto i : component_dofs[d])
-        momentum[d] += tmp(i);
-    sum_over_ranks(momentum, comm);
+    // momentum: sum of M udot over the DoFs of each body and component
+    // (Theorem 3.1); body_momentum[3 b + d]
+    std::vector<double> body_momentum(3 * scene->n_bodies(), 0.);
+    for (unsigned int b = 0; b < scene->n_bodies(); ++b)
+      for (unsigned int d = 0; d < dim; ++d)
+        for (const auto i : body_component_dofs[b][d])
+          body_momentum[3 * b + d] += tmp(i);
+    sum_over_ranks(body_momentum, comm);
+    std::vector<double> momentum(3, 0.);
+    for (unsigned int b = 0; b < scene->n_bodies(); ++b)
+      for (unsigned int d = 0; d < 3; ++d)
+        momentum[d] += body_momentum[3 * b + d];
     stiffness_matrix.vmult(tmp, u);
     const double elastic = 0.5 * (tmp * u) - load * u;
     if (step > 0 && viscous_matrix.m() > 0)
@@ -524,7 +714,7 @@ namespace dyncontact
           {
             n_active += 1.;
             active_measure += rows.rows[p].weight;
-            const double f_p = 2. / (tau * tau) * report.multipliers[p];
+            const double f_p = force_factor * report.multipliers[p];
             force += f_p;
             max_pressure = std::max(max_pressure, f_p / rows.rows[p].weight);
           }
@@ -556,7 +746,7 @@ namespace dyncontact
       kinetic + elastic,
       momentum[0],
       momentum[1],
-      dim == 3 ? momentum[dim - 1] : 0.,
+      momentum[2],
       n_active,
       active_measure,
       critical_measure,
@@ -573,6 +763,9 @@ namespace dyncontact
       double(triangulation.n_global_active_cells()),
       double(dof_handler.n_dofs()),
       wall_time};
+    if (scene->n_bodies() == 2)
+      for (unsigned int d = 0; d < 3; ++d)
+        row.push_back(body_momentum[3 + d]);
     if (scene->has_exact_solution())
       row.push_back(compute_energy_error(time));
 
@@ -599,30 +792,45 @@ namespace dyncontact
     u_ghosted = u;
     v_ghosted = udot;
 
-    // nodal contact fields on the scalar FE_Q
+    // nodal contact fields on the scalar FE_Q: pressure on both sides (the
+    // master side gets each row's force through the weights N_j of its
+    // image point), active and critical sets and the current gap
+    // g_p - (C u)_p on the slave side
+    const double factor = integrator->force_factor();
+    VectorType   master_force(locally_owned, comm);
+    const auto   violation = row_evaluator->constraint_values(u);
     TrilinosWrappers::MPI::Vector pressure(scalar_locally_owned, comm),
-      active(scalar_locally_owned, comm), critical(scalar_locally_owned, comm);
-    const double tau = parameters.time_step;
+      active(scalar_locally_owned, comm), critical(scalar_locally_owned, comm),
+      gap(scalar_locally_owned, comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     for (unsigned int p = 0; p < rows.size(); ++p)
-      if (scalar_locally_owned.is_element(row_scalar_dofs[p]))
+      if (rows.rows[p].owner == my_rank)
         {
-          pressure(row_scalar_dofs[p]) =
-            report.active[p] ?
-              2. / (tau * tau) * report.multipliers[p] / rows.rows[p].weight :
-              0.;
+          const double force =
+            report.active[p] ? factor * report.multipliers[p] : 0.;
+          pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
           active(row_scalar_dofs[p])   = report.active[p];
           critical(row_scalar_dofs[p]) = report.critical[p];
+          gap(row_scalar_dofs[p])      = -violation[p];
+          for (const auto &[dof0, N] : rows.rows[p].master_nodes)
+            master_force(dof0) += N * force;
         }
+    master_force.compress(VectorOperation::add);
+    for (const auto &[dof0, scalar_dof] : owned_system0_to_scalar)
+      if (master_force(dof0) != 0.)
+        pressure(scalar_dof) = master_force(dof0) / boundary_mass(dof0);
     pressure.compress(VectorOperation::insert);
     active.compress(VectorOperation::insert);
     critical.compress(VectorOperation::insert);
+    gap.compress(VectorOperation::insert);
     TrilinosWrappers::MPI::Vector pressure_g(scalar_locally_owned,
                                              scalar_locally_relevant,
                                              comm),
-      active_g(pressure_g), critical_g(pressure_g);
+      active_g(pressure_g), critical_g(pressure_g), gap_g(pressure_g);
     pressure_g = pressure;
     active_g   = active;
     critical_g = critical;
+    gap_g      = gap;
 
     DataOut<dim> data_out;
     data_out.attach_triangulation(triangulation);
@@ -636,11 +844,13 @@ namespace dyncontact
                              v_ghosted,
                              std::vector<std::string>(dim, "velocity"),
                              vector_field);
-    const VonMisesPostprocessor<dim> von_mises(scene->material());
+    const VonMisesPostprocessor<dim> von_mises(*scene);
     data_out.add_data_vector(dof_handler, u_ghosted, von_mises);
     data_out.add_data_vector(scalar_dof_handler, pressure_g, "contact_pressure");
     data_out.add_data_vector(scalar_dof_handler, active_g, "active_set");
     data_out.add_data_vector(scalar_dof_handler, critical_g, "critical_set");
+    if (!scene->contact_pairs().empty())
+      data_out.add_data_vector(scalar_dof_handler, gap_g, "gap");
     Vector<float> subdomain(triangulation.n_active_cells());
     for (auto &s : subdomain)
       s = triangulation.locally_owned_subdomain();
@@ -705,6 +915,14 @@ namespace dyncontact
       TimerOutput::Scope t(*timer, "setup");
       scene->create_coarse_mesh(triangulation);
       triangulation.refine_global(parameters.initial_refinements);
+      scene->refine_initial_mesh(triangulation);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        AssertThrow(cell->material_id() < scene->n_bodies(),
+                    ExcMessage("A cell of the mesh has material id " +
+                               std::to_string(cell->material_id()) +
+                               ", but the scene has " +
+                               std::to_string(scene->n_bodies()) +
+                               " bodies (ids 0 to n-1)."));
     }
     setup_system();
     assemble_system();
@@ -729,6 +947,7 @@ namespace dyncontact
                                                     locally_relevant,
                                                     mesh_constraints,
                                                     rows,
+                                                    constant_modes,
                                                     comm);
     }
 
@@ -756,6 +975,10 @@ namespace dyncontact
                           "cells",
                           "dofs",
                           "step_wall_time"};
+    if (scene->n_bodies() == 2)
+      for (const std::string column :
+           {"momentum_x_body2", "momentum_y_body2", "momentum_z_body2"})
+        statistics.columns.push_back(column);
     if (scene->has_exact_solution())
       statistics.columns.push_back("error_energy_norm");
     if (statistics_file.is_open())
@@ -771,12 +994,17 @@ namespace dyncontact
       output_results(0, 0., report);
 
     const double       tau     = parameters.time_step;
-    const unsigned int n_steps = static_cast<unsigned int>(
-      std::ceil(parameters.end_time / tau - 1e-9));
+    // the static problem is solved once, at t = End time
+    const unsigned int n_steps =
+      parameters.scheme == Scheme::quasi_static ?
+        1 :
+        static_cast<unsigned int>(std::ceil(parameters.end_time / tau - 1e-9));
     double next_output = parameters.output_interval;
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const double time = step * tau;
+        const double time = parameters.scheme == Scheme::quasi_static ?
+                              parameters.end_time :
+                              step * tau;
         Timer        step_timer;
         u_old = u;
         {

@@ -15,9 +15,11 @@ namespace dyncontact
       return Scheme::contact_stabilized;
     if (name == "N-CS++")
       return Scheme::improved_contact_stabilized;
+    if (name == "static")
+      return Scheme::quasi_static;
     AssertThrow(false,
                 ExcMessage("Time integration/Scheme must be one of N-CI, "
-                           "N-CS, N-CS++; got '" +
+                           "N-CS, N-CS++, static; got '" +
                            name + "'."));
     return Scheme::contact_implicit;
   }
@@ -35,6 +37,8 @@ namespace dyncontact
           return "N-CS";
         case Scheme::improved_contact_stabilized:
           return "N-CS++";
+        case Scheme::quasi_static:
+          return "static";
       }
     return "";
   }
@@ -50,6 +54,7 @@ namespace dyncontact
     const IndexSet                    &locally_relevant,
     const AffineConstraints<double>   &mesh_constraints,
     const ContactRows                 &rows,
+    const std::vector<std::vector<bool>> &constant_modes,
     const MPI_Comm                     comm)
     : scheme(scheme)
     , tau(tau)
@@ -60,17 +65,32 @@ namespace dyncontact
     , displacement_active(rows.size(), 0)
     , projection_active(rows.size(), 0)
   {
-    // S = M + tau^2/4 A + tau/2 B, formed from the assembled matrices
-    S.copy_from(*system.M);
-    S.add(tau * tau / 4., *system.A);
-    if (system.B != nullptr)
-      S.add(tau / 2., *system.B);
-
     displacement_solver.reinit(locally_owned,
                                locally_relevant,
                                mesh_constraints,
                                rows);
-    displacement_solver.set_matrix(S, false);
+    displacement_solver.set_constant_modes(constant_modes);
+    if (scheme == Scheme::quasi_static)
+      {
+        // H = A; AMG gets A + eps M, which stays SPD without Dirichlet data
+        S.copy_from(*system.A);
+        preconditioner_matrix.copy_from(*system.A);
+        preconditioner_matrix.add(1e-6 * system.A->linfty_norm() /
+                                    system.M->linfty_norm(),
+                                  *system.M);
+        displacement_solver.set_matrix(S, false, &preconditioner_matrix);
+        // start with every row active: the bodies are held by the contact
+        displacement_active.assign(rows.size(), 1);
+      }
+    else
+      {
+        // S = M + tau^2/4 A + tau/2 B, formed from the assembled matrices
+        S.copy_from(*system.M);
+        S.add(tau * tau / 4., *system.A);
+        if (system.B != nullptr)
+          S.add(tau / 2., *system.B);
+        displacement_solver.set_matrix(S, false);
+      }
     projection_solver.reinit(locally_owned,
                              locally_relevant,
                              mesh_constraints,
@@ -157,6 +177,15 @@ namespace dyncontact
 
     switch (scheme)
       {
+        case Scheme::quasi_static:
+          {
+            // min 1/2 v^T A v - f^T v on K_h
+            solve_displacement(*system.f, u_new, report);
+            udot = 0.;
+            report.projection_active.assign(rows->size(), 0);
+            break;
+          }
+
         case Scheme::contact_implicit:
           {
             // (11c): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v

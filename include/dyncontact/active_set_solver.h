@@ -84,7 +84,17 @@ namespace dyncontact
      * unconstrained slave DoFs the solve is then pointwise.
      */
     void
-    set_matrix(const MatrixType &H, const bool is_diagonal);
+    set_matrix(const MatrixType &H,
+               const bool        is_diagonal,
+               const MatrixType *preconditioner_matrix = nullptr);
+
+    /// The rigid translations (per component, locally owned DoFs), given to
+    /// AMG as near-null-space; call before set_matrix().
+    void
+    set_constant_modes(const std::vector<std::vector<bool>> &modes)
+    {
+      constant_modes = modes;
+    }
 
     /**
      * Solves the constrained problem for right-hand side @p r. On entry
@@ -146,6 +156,7 @@ namespace dyncontact
     VectorType          diagonal;
     std::vector<double> row_scaling;
 
+    std::vector<std::vector<bool>>                        constant_modes;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG>    amg;
     std::unique_ptr<TrilinosWrappers::PreconditionJacobi> jacobi;
   };

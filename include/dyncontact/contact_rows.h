@@ -39,6 +39,9 @@ namespace dyncontact
     unsigned int eliminated = 0;
     /// MPI rank that owns the slave node.
     unsigned int owner = 0;
+    /// Master nodes at the image point: (component-0 DoF, N_j), for the
+    /// master-side contact pressure; empty for a rigid obstacle.
+    std::vector<std::pair<global_dof_index, double>> master_nodes;
 
     global_dof_index
     eliminated_dof() const
@@ -57,7 +60,7 @@ namespace dyncontact
     serialize(Archive &ar, const unsigned int)
     {
       ar &n_components &entries &normal &position &gap &weight &eliminated
-        &owner;
+        &owner &master_nodes;
     }
   };
 

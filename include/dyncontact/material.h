@@ -1,6 +1,8 @@
 #ifndef dyncontact_material_h
 #define dyncontact_material_h
 
+#include <string>
+
 namespace dealii
 {
   class ParameterHandler;
@@ -50,13 +52,15 @@ namespace dyncontact
     double
     p_wave_speed() const;
 
-    /// Declares subsection "Material" with its entries.
+    /// Declares the subsection (by default "Material") with its entries.
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const std::string         &subsection = "Material");
 
-    /// Reads subsection "Material" and checks every value's range.
+    /// Reads the subsection and checks every value's range.
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const std::string         &subsection = "Material");
   };
 } // namespace dyncontact
 

@@ -6,6 +6,7 @@
 #include <dyncontact/time_integrator.h>
 
 #include <string>
+#include <vector>
 
 namespace dyncontact
 {
@@ -33,7 +34,8 @@ namespace dyncontact
     double output_interval = 0.05;
     bool   write_vtu       = true;
 
-    Material                    material;
+    /// Body 1 ("Material") and body 2 ("Material of body 2").
+    std::vector<Material>       materials;
     ActiveSetSolver::Parameters solver;
 
     /// Declares every parameter of the program (the scenes' included).

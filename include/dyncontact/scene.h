@@ -7,6 +7,7 @@
 
 #include <dyncontact/material.h>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,29 @@ namespace dyncontact
     Tensor<1, dim> normal;
   };
 
+  /// Homogeneous Dirichlet data on one boundary id, for some components.
+  struct DirichletBoundary
+  {
+    types::boundary_id id;
+    /// Which displacement components are fixed (only the first dim count).
+    std::array<bool, 3> components{{true, true, true}};
+  };
+
+  /**
+   * A two-body contact pair: the boundary ids of the possible contact
+   * boundaries of the two sides, which side is the slave, and how far from a
+   * slave node the contact search looks for the master surface.
+   */
+  struct ContactPair
+  {
+    std::vector<types::boundary_id> first_side;
+    std::vector<types::boundary_id> second_side;
+    /// -1: automatic (the finer side), 0: the first side, 1: the second side.
+    int slave_side = -1;
+    /// In m; slave nodes farther than this from the master get no row.
+    double search_radius = 0.;
+  };
+
   /// The exact solution at one point and time, where a scene knows it.
   template <int dim>
   struct ExactValues
@@ -61,20 +85,44 @@ namespace dyncontact
     virtual std::string
     name() const = 0;
 
-    /// The coarse mesh with boundary ids (before global refinement).
+    /// The coarse mesh with boundary ids (before global refinement). Each
+    /// cell's material id is the index of its body.
     virtual void
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const = 0;
 
+    /// Local refinement after the global refinements (e.g. towards the
+    /// contact zone); by default none.
+    virtual void
+    refine_initial_mesh(Triangulation<dim, dim> &) const
+    {}
+
+    /// Number of bodies (cells have material id 0 .. n_bodies()-1).
+    virtual unsigned int
+    n_bodies() const
+    {
+      return 1;
+    }
+
     virtual const Material &
-    material() const = 0;
+    material(const unsigned int body) const = 0;
 
-    /// Boundary ids of the possible contact boundary Gamma_C of the slave.
+    /// Boundary ids that touch the rigid obstacle, if there is one.
     virtual std::vector<types::boundary_id>
-    contact_boundary_ids() const = 0;
+    contact_boundary_ids() const
+    {
+      return {};
+    }
 
-    /// Boundary ids with homogeneous Dirichlet data (all components).
-    virtual std::vector<types::boundary_id>
-    dirichlet_boundary_ids() const
+    /// Two-body contact pairs; none by default.
+    virtual std::vector<ContactPair>
+    contact_pairs() const
+    {
+      return {};
+    }
+
+    /// Boundaries with homogeneous Dirichlet data.
+    virtual std::vector<DirichletBoundary>
+    dirichlet_boundaries() const
     {
       return {};
     }
@@ -86,9 +134,9 @@ namespace dyncontact
       return {};
     }
 
-    /// Constant body force density (N/m^3).
+    /// Constant body force density (N/m^3) in the given body.
     virtual Tensor<1, dim>
-    body_force() const
+    body_force(const unsigned int /*body*/) const
     {
       return Tensor<1, dim>();
     }
@@ -133,10 +181,23 @@ namespace dyncontact
   void
   declare_scene_parameters(ParameterHandler &prm);
 
-  /// Creates the scene named in "Scene/Name" with the given material.
+  /// Creates the scene named in "Scene/Name" with the materials of its
+  /// bodies (the first from subsection "Material", the second from
+  /// "Material of body 2").
   template <int dim>
   std::unique_ptr<Scene<dim>>
-  create_scene(ParameterHandler &prm, const Material &material);
+  create_scene(ParameterHandler &prm, const std::vector<Material> &materials);
+
+  /**
+   * Builds one coarse mesh from several coarse meshes (the bodies) without
+   * merging any vertices, so that bodies touching at t = 0 stay separate.
+   * Cell material ids become the index of the body; boundary and manifold
+   * ids are kept.
+   */
+  template <int dim>
+  void
+  merge_bodies(const std::vector<const Triangulation<dim, dim> *> &bodies,
+               Triangulation<dim, dim>                          &result);
 } // namespace dyncontact
 
 #endif

@@ -12,12 +12,14 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <dyncontact/contact_mapping.h>
 #include <dyncontact/parameters.h>
 #include <dyncontact/scene.h>
 #include <dyncontact/statistics.h>
 
 #include <array>
 #include <fstream>
+#include <map>
 #include <memory>
 
 namespace dyncontact
@@ -49,6 +51,12 @@ namespace dyncontact
     assemble_system();
     void
     make_contact_rows();
+    /// The contact faces with these boundary ids, from all ranks.
+    std::vector<MasterFace<dim>>
+    gather_faces(const std::vector<types::boundary_id> &ids) const;
+    /// Boundary ids of every contact boundary (obstacle and pairs).
+    std::vector<types::boundary_id>
+    all_contact_boundary_ids() const;
     void
     set_initial_values();
     /// Appends one row to the statistics (and to statistics.tsv).
@@ -84,8 +92,10 @@ namespace dyncontact
     IndexSet                  scalar_locally_owned;
     IndexSet                  scalar_locally_relevant;
     AffineConstraints<double> mesh_constraints;
-    /// Locally owned DoFs of each displacement component.
-    std::array<IndexSet, dim> component_dofs;
+    /// Locally owned DoFs of each body and displacement component.
+    std::vector<std::vector<IndexSet>> body_component_dofs;
+    /// Rigid translations, the near-null-space for AMG.
+    std::vector<std::vector<bool>> constant_modes;
 
     MatrixType mass_matrix;
     MatrixType stiffness_matrix;
@@ -94,6 +104,9 @@ namespace dyncontact
     VectorType boundary_mass; // w_p at every DoF of Gamma_C
 
     ContactRows rows;
+    /// Component-0 system DoF -> scalar DoF, for the nodes owned here.
+    std::map<types::global_dof_index, types::global_dof_index>
+      owned_system0_to_scalar;
     /// For each row, the scalar DoF of its slave node (for output).
     std::vector<types::global_dof_index> row_scalar_dofs;
 

@@ -11,7 +11,8 @@ namespace dyncontact
   {
     contact_implicit,           // N-CI, eq. (11)
     contact_stabilized,         // N-CS, Deuflhard-Krause-Ertel 2007
-    improved_contact_stabilized // N-CS++, eq. (12)
+    improved_contact_stabilized, // N-CS++, eq. (12)
+    quasi_static                 // min 1/2 v^T A v - f^T v on K_h
   };
 
   Scheme
@@ -68,6 +69,7 @@ namespace dyncontact
                    const IndexSet                     &locally_relevant,
                    const AffineConstraints<double>    &mesh_constraints,
                    const ContactRows                  &rows,
+                   const std::vector<std::vector<bool>> &constant_modes,
                    const MPI_Comm                      comm);
 
     /// Initial velocity: N-CS++ replaces udot_0 by (P(u0 + tau udot_0) -
@@ -83,6 +85,14 @@ namespace dyncontact
     time_step() const
     {
       return tau;
+    }
+
+    /// Factor from a multiplier mu_p to the contact force: 2/tau^2 for the
+    /// dynamic schemes (eq. 13), 1 for the static problem.
+    double
+    force_factor() const
+    {
+      return scheme == Scheme::quasi_static ? 1. : 2. / (tau * tau);
     }
 
     const MatrixType &
@@ -108,6 +118,8 @@ namespace dyncontact
     const double             tau;
     const SemiDiscreteSystem system;
     MatrixType               S;
+    /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
+    MatrixType preconditioner_matrix;
     ActiveSetSolver          displacement_solver;
     ActiveSetSolver          projection_solver;
     const ContactRows       *rows;

@@ -5,6 +5,23 @@
 
 namespace dyncontact
 {
+  /// The exact 1D bar impact solution (ALGORITHMS.md section 7) at axial
+  /// position xi in [0, L] of a bar hitting a wall at xi = -g0.
+  struct BarSolution1D
+  {
+    double displacement;
+    double velocity;
+    double strain;
+  };
+
+  BarSolution1D
+  exact_bar_impact_1d(const double xi,
+                      const double t,
+                      const double length,
+                      const double wave_speed,
+                      const double impact_velocity,
+                      const double initial_gap);
+
   /**
    * ALGORITHMS.md section 7: a bar [0,L] x [0,H]^{d-1} moving with -v0 e_x
    * hits a rigid wall at x = -g0. With nu = 0 the 1D solution is exact in
@@ -34,7 +51,7 @@ namespace dyncontact
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
 
     const Material &
-    material() const override
+    material(const unsigned int) const override
     {
       return mat;
     }
@@ -45,14 +62,14 @@ namespace dyncontact
       return {0};
     }
 
-    std::vector<types::boundary_id>
-    dirichlet_boundary_ids() const override;
+    std::vector<DirichletBoundary>
+    dirichlet_boundaries() const override;
 
     std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
     neumann_tractions() const override;
 
     Tensor<1, dim>
-    body_force() const override;
+    body_force(const unsigned int) const override;
 
     Tensor<1, dim>
     initial_displacement(const Point<dim> &x) const override;

@@ -1,0 +1,75 @@
+#ifndef dyncontact_scenes_two_bars_h
+#define dyncontact_scenes_two_bars_h
+
+#include <dyncontact/scene.h>
+
+namespace dyncontact
+{
+  /**
+   * Two identical bars meet head-on: bar 1 = [-g0-L, -g0] x [0,H]^{d-1}
+   * moves with +v0 e_x, bar 2 = [g0, g0+L] x [0,H]^{d-1} with -v0 e_x. By
+   * symmetry each is the bar impact of ALGORITHMS.md section 7 with the wall
+   * at the mid-plane x = 0 (exact for nu = 0): contact from g0/v0 for 2L/c
+   * at pressure rho c v0, then each bar leaves with its speed reversed. The
+   * numbers of cells across the height may differ between the bars (e.g. 8
+   * and 11), which makes the meshes non-matching at the interface.
+   */
+  template <int dim>
+  class TwoBars : public Scene<dim>
+  {
+  public:
+    TwoBars(ParameterHandler &prm, const Material &material);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    std::string
+    name() const override
+    {
+      return "two bars";
+    }
+
+    void
+    create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
+
+    unsigned int
+    n_bodies() const override
+    {
+      return 2;
+    }
+
+    const Material &
+    material(const unsigned int) const override
+    {
+      return mat;
+    }
+
+    std::vector<ContactPair>
+    contact_pairs() const override;
+
+    Tensor<1, dim>
+    initial_velocity(const Point<dim> &x) const override;
+
+    bool
+    has_exact_solution() const override;
+
+    ExactValues<dim>
+    exact_solution(const Point<dim> &x, const double t) const override;
+
+    double
+    reference_contact_pressure() const override;
+
+  private:
+    Material                    mat;
+    double                      length;
+    double                      height;
+    double                      impact_velocity;
+    double                      initial_gap;
+    std::array<unsigned int, 2> cells_along;
+    std::array<unsigned int, 2> cells_across;
+    int                         slave_side;
+    double                      search_radius;
+  };
+} // namespace dyncontact
+
+#endif

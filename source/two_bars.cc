@@ -1,0 +1,181 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <dyncontact/scenes/bar_impact.h>
+#include <dyncontact/scenes/two_bars.h>
+
+#include <cmath>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  TwoBars<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    // Length, Height, Impact velocity, Initial gap and Cells along length
+    // are the bar impact's entries
+    prm.enter_subsection("Scene");
+    prm.declare_entry("Cells along length of body 2",
+                      "0",
+                      Patterns::Integer(0),
+                      "Two bars: coarse cells along the second bar; 0 = as "
+                      "many as along the first.");
+    prm.declare_entry("Cells across",
+                      "0",
+                      Patterns::Integer(0),
+                      "Two bars: coarse cells across the height of the first "
+                      "bar; 0 = from the aspect ratio (at least one).");
+    prm.declare_entry("Cells across body 2",
+                      "0",
+                      Patterns::Integer(0),
+                      "Two bars: coarse cells across the height of the "
+                      "second bar; 0 = as many as across the first. Different "
+                      "numbers make non-matching meshes at the interface.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  TwoBars<dim>::TwoBars(ParameterHandler &prm, const Material &material)
+    : mat(material)
+  {
+    prm.enter_subsection("Scene");
+    length          = prm.get_double("Length");
+    height          = prm.get_double("Height");
+    impact_velocity = prm.get_double("Impact velocity");
+    initial_gap     = prm.get_double("Initial gap");
+    cells_along[0]  = prm.get_integer("Cells along length");
+    cells_along[1]  = prm.get_integer("Cells along length of body 2");
+    cells_across[0] = prm.get_integer("Cells across");
+    cells_across[1] = prm.get_integer("Cells across body 2");
+    const std::string slave = prm.get("Slave side");
+    search_radius           = prm.get_double("Contact search radius");
+    prm.leave_subsection();
+
+    slave_side = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
+    if (cells_along[1] == 0)
+      cells_along[1] = cells_along[0];
+    if (cells_across[0] == 0)
+      cells_across[0] = std::max<unsigned int>(
+        1, std::lround(cells_along[0] * height / length));
+    if (cells_across[1] == 0)
+      cells_across[1] = cells_across[0];
+    if (search_radius == 0.)
+      search_radius = 2. * initial_gap + height;
+
+    AssertThrow(std::isfinite(length) && length > 0.,
+                ExcMessage("Scene/Length must be a finite number > 0 (m)."));
+    AssertThrow(std::isfinite(height) && height > 0.,
+                ExcMessage("Scene/Height must be a finite number > 0 (m)."));
+    AssertThrow(std::isfinite(impact_velocity) && impact_velocity >= 0.,
+                ExcMessage(
+                  "Scene/Impact velocity must be a finite number >= 0 (m/s)."));
+    AssertThrow(std::isfinite(initial_gap) && initial_gap >= 0.,
+                ExcMessage(
+                  "Scene/Initial gap must be a finite number >= 0 (m)."));
+  }
+
+
+
+  template <int dim>
+  void
+  TwoBars<dim>::create_coarse_mesh(Triangulation<dim, dim> &tria) const
+  {
+    std::array<Triangulation<dim, dim>, 2> bars;
+    for (unsigned int b = 0; b < 2; ++b)
+      {
+        std::vector<unsigned int> repetitions(dim, cells_across[b]);
+        repetitions[0] = cells_along[b];
+        Point<dim> lower, upper;
+        for (unsigned int d = 1; d < dim; ++d)
+          upper[d] = height;
+        lower[0] = (b == 0) ? -initial_gap - length : initial_gap;
+        upper[0] = (b == 0) ? -initial_gap : initial_gap + length;
+        GridGenerator::subdivided_hyper_rectangle(bars[b],
+                                                  repetitions,
+                                                  lower,
+                                                  upper);
+        // contact faces: bar 1's end x = -g0 (id 1), bar 2's x = g0 (id 2)
+        for (const auto &cell : bars[b].active_cell_iterators())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                std::abs(cell->face(f)->center()[0] -
+                         (b == 0 ? -initial_gap : initial_gap)) <
+                  1e-10 * length)
+              cell->face(f)->set_boundary_id(b + 1);
+      }
+    merge_bodies<dim>({&bars[0], &bars[1]}, tria);
+  }
+
+
+
+  template <int dim>
+  std::vector<ContactPair>
+  TwoBars<dim>::contact_pairs() const
+  {
+    ContactPair pair;
+    pair.first_side    = {1};
+    pair.second_side   = {2};
+    pair.slave_side    = slave_side;
+    pair.search_radius = search_radius;
+    return {pair};
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  TwoBars<dim>::initial_velocity(const Point<dim> &x) const
+  {
+    Tensor<1, dim> v;
+    v[0] = (x[0] < 0.) ? impact_velocity : -impact_velocity;
+    return v;
+  }
+
+
+
+  template <int dim>
+  bool
+  TwoBars<dim>::has_exact_solution() const
+  {
+    return mat.poissons_ratio == 0. && !mat.is_viscous() &&
+           impact_velocity > 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  TwoBars<dim>::reference_contact_pressure() const
+  {
+    return mat.density * mat.bar_wave_speed() * impact_velocity;
+  }
+
+
+
+  template <int dim>
+  ExactValues<dim>
+  TwoBars<dim>::exact_solution(const Point<dim> &x, const double t) const
+  {
+    // bar 2 is the bar impact in xi = x - g0 with the wall at x = 0; bar 1
+    // its mirror image
+    const double        sign = (x[0] < 0.) ? -1. : 1.;
+    const BarSolution1D bar  = exact_bar_impact_1d(sign * x[0] - initial_gap,
+                                                  t,
+                                                  length,
+                                                  mat.bar_wave_speed(),
+                                                  impact_velocity,
+                                                  initial_gap);
+    ExactValues<dim> values;
+    values.displacement[0]             = sign * bar.displacement;
+    values.velocity[0]                 = sign * bar.velocity;
+    values.displacement_gradient[0][0] = bar.strain;
+    return values;
+  }
+
+  template class TwoBars<2>;
+  template class TwoBars<3>;
+} // namespace dyncontact
