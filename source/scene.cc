@@ -5,6 +5,7 @@
 
 #include <dyncontact/scene.h>
 #include <dyncontact/scenes/bar_impact.h>
+#include <dyncontact/scenes/hertz.h>
 #include <dyncontact/scenes/two_bars.h>
 
 #include <tuple>
@@ -20,7 +21,9 @@ namespace dyncontact
                       Patterns::Anything(),
                       "Which scene to run. Available: 'bar impact' (a bar "
                       "against a rigid wall, with an exact solution), 'two "
-                      "bars' (two bars meeting head-on, exact).");
+                      "bars' (two bars meeting head-on, exact), 'hertz' (2D: "
+                      "a half-cylinder pressed into or dropping onto a "
+                      "block), 'ball on block' (its 3D counterpart).");
     prm.declare_entry("Slave side",
                       "auto",
                       Patterns::Selection("auto|1|2"),
@@ -36,6 +39,7 @@ namespace dyncontact
     prm.leave_subsection();
     BarImpact<2>::declare_parameters(prm);
     TwoBars<2>::declare_parameters(prm);
+    Hertz<2>::declare_parameters(prm);
   }
 
 
@@ -52,10 +56,26 @@ namespace dyncontact
       return std::make_unique<BarImpact<dim>>(prm, materials[0]);
     if (name == "two bars")
       return std::make_unique<TwoBars<dim>>(prm, materials[0]);
+    if (name == "hertz")
+      {
+        AssertThrow(dim == 2,
+                    ExcMessage("Scene 'hertz' is two-dimensional (set "
+                               "Dimension = 2); its 3D counterpart is 'ball "
+                               "on block'."));
+        return std::make_unique<Hertz<dim>>(prm, materials, name);
+      }
+    if (name == "ball on block")
+      {
+        AssertThrow(dim == 3,
+                    ExcMessage("Scene 'ball on block' is three-dimensional "
+                               "(set Dimension = 3); its 2D counterpart is "
+                               "'hertz'."));
+        return std::make_unique<Hertz<dim>>(prm, materials, name);
+      }
 
     AssertThrow(false,
                 ExcMessage("Scene/Name must be one of: 'bar impact', 'two "
-                           "bars'; got '" +
+                           "bars', 'hertz', 'ball on block'; got '" +
                            name + "'."));
     return nullptr;
   }

@@ -483,13 +483,27 @@ namespace dyncontact
         int slave = pair.slave_side;
         if (slave < 0)
           {
-            // the finer side (smaller mean face size) is the slave
+            // the finer side is the slave: compare the mean size of the
+            // faces that face the other side (their centre has an image on
+            // it), so that a coarse far field does not count
             std::array<double, 2> size{{0., 0.}};
             for (unsigned int s = 0; s < 2; ++s)
               {
+                const ContactMapping<dim> other(sides[1 - s],
+                                                pair.search_radius);
+                unsigned int              n = 0;
                 for (const auto &face : sides[s])
-                  size[s] += face.vertices[0].distance(face.vertices.back());
-                size[s] /= std::max<std::size_t>(sides[s].size(), 1);
+                  {
+                    Point<dim> centre;
+                    for (const auto &v : face.vertices)
+                      centre += v / double(face.vertices.size());
+                    if (other.find_image(centre))
+                      {
+                        size[s] += face.vertices[0].distance(face.vertices.back());
+                        ++n;
+                      }
+                  }
+                size[s] = (n > 0) ? size[s] / n : 1e300;
               }
             slave = (size[1] < size[0]) ? 1 : 0;
           }

@@ -1,0 +1,100 @@
+#ifndef dyncontact_scenes_hertz_h
+#define dyncontact_scenes_hertz_h
+
+#include <dyncontact/scene.h>
+
+namespace dyncontact
+{
+  /**
+   * The classic example of the contact-stabilized Newmark literature: a
+   * (viscoelastic) half-cylinder of radius R (2D, scene "hertz") or a ball
+   * (3D, scene "ball on block") pressed into, or dropping onto, an elastic
+   * block. By symmetry only x >= 0 (and z >= 0 in 3D) is meshed, with
+   * rollers on the symmetry planes; the block's bottom is clamped. Body 1 is
+   * the cylinder/ball ("Material"), body 2 the block ("Material of body
+   * 2"). The load is a traction on the flat top of the cylinder/ball; in the
+   * static scheme it gives Hertz's solution: in 2D (plane strain, load P per
+   * unit thickness) the half-width b = sqrt(4PR/(pi E*)) and the peak
+   * pressure p0 = 2P/(pi b); in 3D (load P) the radius a = (3PR/(4E*))^{1/3}
+   * and p0 = 3P/(2 pi a^2); 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
+   */
+  template <int dim>
+  class Hertz : public Scene<dim>
+  {
+  public:
+    Hertz(ParameterHandler            &prm,
+          const std::vector<Material> &materials,
+          const std::string           &name);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    std::string
+    name() const override
+    {
+      return scene_name;
+    }
+
+    void
+    create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
+
+    void
+    refine_initial_mesh(Triangulation<dim, dim> &triangulation) const override;
+
+    unsigned int
+    n_bodies() const override
+    {
+      return 2;
+    }
+
+    const Material &
+    material(const unsigned int body) const override
+    {
+      return materials[body];
+    }
+
+    std::vector<ContactPair>
+    contact_pairs() const override;
+
+    std::vector<DirichletBoundary>
+    dirichlet_boundaries() const override;
+
+    std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+    neumann_tractions() const override;
+
+    Tensor<1, dim>
+    initial_velocity(const Point<dim> &x) const override;
+
+    /// Hertz's contact half-width (2D) or radius (3D), in m.
+    double
+    hertz_contact_size() const;
+
+    /// Hertz's peak pressure p0, in Pa.
+    double
+    hertz_peak_pressure() const;
+
+    double
+    reference_contact_pressure() const override
+    {
+      return hertz_peak_pressure();
+    }
+
+  private:
+    double
+    effective_modulus() const;
+
+    std::string           scene_name;
+    std::vector<Material> materials;
+    double                radius;
+    double                block_width;
+    double                block_depth;
+    double                load;
+    double                drop_velocity;
+    double                initial_gap;
+    unsigned int          contact_refinements;
+    int                   slave_side;
+    double                search_radius;
+  };
+} // namespace dyncontact
+
+#endif
