@@ -245,7 +245,8 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  BarImpact<dim>::initial_displacement(const Point<dim> &p) const
+  BarImpact<dim>::initial_displacement(const Point<dim> &p,
+                                     const unsigned int) const
   {
     Tensor<1, dim> e_x;
     e_x[0] = 1.;
@@ -256,7 +257,8 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  BarImpact<dim>::initial_velocity(const Point<dim> &) const
+  BarImpact<dim>::initial_velocity(const Point<dim> &,
+                                   const unsigned int) const
   {
     Tensor<1, dim> e_x;
     e_x[0] = 1.;

@@ -273,10 +273,12 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  Hertz<dim>::initial_velocity(const Point<dim> &x) const
+  Hertz<dim>::initial_velocity(const Point<dim> &x,
+                                 const unsigned int body) const
   {
     Tensor<1, dim> v;
-    if (x[1] > 0.5 * initial_gap)
+    (void)x;
+    if (body == 0)
       v[1] = -drop_velocity;
     return v;
   }

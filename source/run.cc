@@ -35,6 +35,9 @@ namespace dyncontact
 
     RunParameters parameters;
     parameters.parse_parameters(prm);
+    if (std::filesystem::exists(source))
+      parameters.input_directory =
+        std::filesystem::path(source).parent_path().string();
 
     if (parameters.dimension == 2)
       return Simulator<2>(parameters, prm, comm).run();

@@ -5,6 +5,7 @@
 
 #include <dyncontact/scene.h>
 #include <dyncontact/scenes/bar_impact.h>
+#include <dyncontact/scenes/gmsh_scene.h>
 #include <dyncontact/scenes/hertz.h>
 #include <dyncontact/scenes/two_bars.h>
 
@@ -23,7 +24,8 @@ namespace dyncontact
                       "against a rigid wall, with an exact solution), 'two "
                       "bars' (two bars meeting head-on, exact), 'hertz' (2D: "
                       "a half-cylinder pressed into or dropping onto a "
-                      "block), 'ball on block' (its 3D counterpart).");
+                      "block), 'ball on block' (its 3D counterpart), 'gmsh' "
+                      "(any one- or two-body mesh from a .msh file).");
     prm.declare_entry("Slave side",
                       "auto",
                       Patterns::Selection("auto|1|2"),
@@ -40,13 +42,16 @@ namespace dyncontact
     BarImpact<2>::declare_parameters(prm);
     TwoBars<2>::declare_parameters(prm);
     Hertz<2>::declare_parameters(prm);
+    GmshScene<2>::declare_parameters(prm);
   }
 
 
 
   template <int dim>
   std::unique_ptr<Scene<dim>>
-  create_scene(ParameterHandler &prm, const std::vector<Material> &materials)
+  create_scene(ParameterHandler            &prm,
+               const std::vector<Material> &materials,
+               const std::string           &input_directory)
   {
     prm.enter_subsection("Scene");
     const std::string name = prm.get("Name");
@@ -73,9 +78,12 @@ namespace dyncontact
         return std::make_unique<Hertz<dim>>(prm, materials, name);
       }
 
+    if (name == "gmsh")
+      return std::make_unique<GmshScene<dim>>(prm, materials, input_directory);
+
     AssertThrow(false,
                 ExcMessage("Scene/Name must be one of: 'bar impact', 'two "
-                           "bars', 'hertz', 'ball on block'; got '" +
+                           "bars', 'hertz', 'ball on block', 'gmsh'; got '" +
                            name + "'."));
     return nullptr;
   }
@@ -122,9 +130,13 @@ namespace dyncontact
   }
 
   template std::unique_ptr<Scene<2>>
-  create_scene<2>(ParameterHandler &, const std::vector<Material> &);
+  create_scene<2>(ParameterHandler &,
+                  const std::vector<Material> &,
+                  const std::string &);
   template std::unique_ptr<Scene<3>>
-  create_scene<3>(ParameterHandler &, const std::vector<Material> &);
+  create_scene<3>(ParameterHandler &,
+                  const std::vector<Material> &,
+                  const std::string &);
   template void
   merge_bodies<2>(const std::vector<const Triangulation<2, 2> *> &,
                   Triangulation<2, 2> &);

@@ -85,7 +85,9 @@ namespace dyncontact
                                           pcout,
                                           TimerOutput::never,
                                           TimerOutput::wall_times))
-    , scene(create_scene<dim>(prm, parameters.materials))
+    , scene(create_scene<dim>(prm,
+                              parameters.materials,
+                              parameters.input_directory))
     , triangulation(comm)
     , fe(FE_Q<dim>(parameters.degree), dim)
     , dof_handler(triangulation)
@@ -608,28 +610,38 @@ namespace dyncontact
   void
   Simulator<dim>::set_initial_values()
   {
-    struct Initial : public Function<dim>
-    {
-      Initial(const Scene<dim> &scene, const bool velocity)
-        : Function<dim>(dim)
-        , scene(scene)
-        , velocity(velocity)
-      {}
-      void
-      vector_value(const Point<dim> &p, Vector<double> &values) const override
-      {
-        const Tensor<1, dim> v = velocity ? scene.initial_velocity(p) :
-                                            scene.initial_displacement(p);
-        for (unsigned int d = 0; d < dim; ++d)
-          values(d) = v[d];
-      }
-      const Scene<dim> &scene;
-      const bool        velocity;
-    };
-    VectorTools::interpolate(mapping, dof_handler, Initial(*scene, false), u);
-    VectorTools::interpolate(mapping, dof_handler, Initial(*scene, true), udot);
-    mesh_constraints.set_zero(u);
-    mesh_constraints.set_zero(udot);
+    // nodal interpolation, cell by cell, so that each body gets its own data
+    // (bodies share no nodes)
+    const auto &unit_points = scalar_fe.get_unit_support_points();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int node = 0; node < unit_points.size(); ++node)
+            {
+              const Point<dim> x =
+                mapping.transform_unit_to_real_cell(cell, unit_points[node]);
+              const Tensor<1, dim> u0 =
+                scene->initial_displacement(x, cell->material_id());
+              const Tensor<1, dim> v0 =
+                scene->initial_velocity(x, cell->material_id());
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const auto dof = dofs[fe.component_to_system_index(d, node)];
+                  if (locally_owned.is_element(dof))
+                    {
+                      u(dof)    = u0[d];
+                      udot(dof) = v0[d];
+                    }
+                }
+            }
+        }
+    u.compress(VectorOperation::insert);
+    udot.compress(VectorOperation::insert);
+    // hanging nodes follow their parents, Dirichlet nodes are fixed
+    mesh_constraints.distribute(u);
+    mesh_constraints.distribute(udot);
   }
 
 

@@ -128,10 +128,12 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  TwoBars<dim>::initial_velocity(const Point<dim> &x) const
+  TwoBars<dim>::initial_velocity(const Point<dim> &x,
+                                 const unsigned int body) const
   {
     Tensor<1, dim> v;
-    v[0] = (x[0] < 0.) ? impact_velocity : -impact_velocity;
+    (void)x;
+    v[0] = (body == 0) ? impact_velocity : -impact_velocity;
     return v;
   }
 

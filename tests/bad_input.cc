@@ -4,34 +4,14 @@
 // and with --help the program prints every parameter with its documentation
 // and exits with status 0.
 
-#include <sys/wait.h>
-
 #include "tests.h"
 
-#include <cstdio>
 #include <filesystem>
 
 namespace
 {
-  struct Outcome
-  {
-    int         status;
-    std::string text;
-  };
-
-  Outcome
-  run_program(const std::string &arguments)
-  {
-    const std::string command =
-      std::string(DYNCONTACT_EXECUTABLE) + " " + arguments + " 2>&1";
-    FILE       *pipe = popen(command.c_str(), "r");
-    std::string text;
-    char        buffer[4096];
-    while (fgets(buffer, sizeof(buffer), pipe) != nullptr)
-      text += buffer;
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
-  }
+  using testing::run_program;
+  using testing::Outcome;
 
   const std::string valid = "set Dimension = 2\n"
                             "subsection Time integration\n"

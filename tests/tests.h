@@ -4,6 +4,8 @@
 #ifndef dyncontact_tests_h
 #define dyncontact_tests_h
 
+#include <sys/wait.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
@@ -11,6 +13,7 @@
 #include <dyncontact/statistics.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -115,6 +118,32 @@ namespace testing
   min_of(const std::vector<double> &v)
   {
     return *std::min_element(v.begin(), v.end());
+  }
+
+  struct Outcome
+  {
+    int         status;
+    std::string text;
+  };
+
+  /// Runs the dyncontact executable with @p arguments; exit status and all
+  /// it printed.
+  inline Outcome
+  run_program(const std::string &arguments)
+  {
+#ifdef DYNCONTACT_EXECUTABLE
+    const std::string command =
+      std::string(DYNCONTACT_EXECUTABLE) + " " + arguments + " 2>&1";
+    FILE       *pipe = popen(command.c_str(), "r");
+    std::string text;
+    char        buffer[4096];
+    while (fgets(buffer, sizeof(buffer), pipe) != nullptr)
+      text += buffer;
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+#else
+    return {-1, arguments};
+#endif
   }
 
   /// max_n (E^{n+1} + W^{n+1}) - (E^n + W^n): positive means energy growth.

@@ -3,6 +3,8 @@
 // (tests/check_vtu.py), which checks that all fields are there and that the
 // mesh warped by the displacement puts the bar's end where the exact
 // solution puts it (free flight, in contact at the wall, after release).
+// Then a two-bars run (tests/check_two_bodies.py): the gap field on the
+// slave face and the contact pressure on both sides.
 
 #include "tests.h"
 
@@ -59,4 +61,18 @@ main(int argc, char **argv)
       log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
                          "/check_vtu.py " + directory);
     }
+
+  std::ofstream("two-bars.prm")
+    << bar_prm(2, "N-CS++", 40, 0.0125, 1.2)
+    << "set Output directory = results-two-bars\n"
+    << "subsection Scene\n  set Name = two bars\n  set Slave side = 2\nend\n"
+    << "subsection Output\n  set Write vtu = true\n"
+    << "  set Output interval = 0.1\nend\n";
+  log() << "two bars: run "
+        << check(run_clean(std::string(DYNCONTACT_EXECUTABLE) +
+                           " two-bars.prm")
+                   .find("command failed") == std::string::npos)
+        << "\n";
+  log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
+                     "/check_two_bodies.py results-two-bars");
 }

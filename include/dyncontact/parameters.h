@@ -20,6 +20,8 @@ namespace dyncontact
     unsigned int dimension        = 2;
     std::string  output_directory = "results";
     unsigned int degree           = 1;
+    /// Folder of the prm file (relative file names in it refer to it).
+    std::string input_directory;
 
     // subsection Time integration
     Scheme scheme      = Scheme::improved_contact_stabilized;

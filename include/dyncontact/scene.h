@@ -141,14 +141,16 @@ namespace dyncontact
       return Tensor<1, dim>();
     }
 
+    /// Initial displacement at x in the given body.
     virtual Tensor<1, dim>
-    initial_displacement(const Point<dim> &) const
+    initial_displacement(const Point<dim> &, const unsigned int /*body*/) const
     {
       return Tensor<1, dim>();
     }
 
+    /// Initial velocity at x in the given body.
     virtual Tensor<1, dim>
-    initial_velocity(const Point<dim> &x) const = 0;
+    initial_velocity(const Point<dim> &x, const unsigned int body) const = 0;
 
     /// The rigid obstacle, if the scene has one.
     virtual std::optional<RigidObstacle<dim>>
@@ -183,10 +185,13 @@ namespace dyncontact
 
   /// Creates the scene named in "Scene/Name" with the materials of its
   /// bodies (the first from subsection "Material", the second from
-  /// "Material of body 2").
+  /// "Material of body 2"); relative file names in the scene's parameters
+  /// are relative to @p input_directory (the prm file's folder).
   template <int dim>
   std::unique_ptr<Scene<dim>>
-  create_scene(ParameterHandler &prm, const std::vector<Material> &materials);
+  create_scene(ParameterHandler            &prm,
+               const std::vector<Material> &materials,
+               const std::string           &input_directory);
 
   /**
    * Builds one coarse mesh from several coarse meshes (the bodies) without

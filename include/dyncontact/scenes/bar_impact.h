@@ -72,10 +72,12 @@ namespace dyncontact
     body_force(const unsigned int) const override;
 
     Tensor<1, dim>
-    initial_displacement(const Point<dim> &x) const override;
+    initial_displacement(const Point<dim> &x,
+                         const unsigned int body) const override;
 
     Tensor<1, dim>
-    initial_velocity(const Point<dim> &x) const override;
+    initial_velocity(const Point<dim> &x,
+                     const unsigned int body) const override;
 
     std::optional<RigidObstacle<dim>>
     obstacle() const override;

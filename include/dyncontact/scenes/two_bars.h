@@ -48,7 +48,8 @@ namespace dyncontact
     contact_pairs() const override;
 
     Tensor<1, dim>
-    initial_velocity(const Point<dim> &x) const override;
+    initial_velocity(const Point<dim> &x,
+                     const unsigned int body) const override;
 
     bool
     has_exact_solution() const override;
