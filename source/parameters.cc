@@ -74,6 +74,7 @@ namespace dyncontact
     Material::declare_parameters(prm, "Material");
     Material::declare_parameters(prm, "Material of body 2");
     ActiveSetSolver::Parameters::declare_parameters(prm);
+    MeshRefinementParameters::declare_parameters(prm);
     declare_scene_parameters(prm);
   }
 
@@ -137,5 +138,6 @@ namespace dyncontact
     materials[0].parse_parameters(prm, "Material");
     materials[1].parse_parameters(prm, "Material of body 2");
     solver.parse_parameters(prm);
+    refinement.parse_parameters(prm);
   }
 } // namespace dyncontact

@@ -545,6 +545,9 @@ namespace dyncontact
           row_scalar_dofs.push_back(r.second);
         }
 
+    row_evaluator = std::make_unique<ActiveSetSolver>(parameters.solver, comm);
+    row_evaluator->reinit(locally_owned, locally_relevant, mesh_constraints, rows);
+
     double measure = 0.;
     for (const auto &row : rows.rows)
       measure += row.weight;
@@ -602,6 +605,44 @@ namespace dyncontact
     for (const auto &rank_faces : Utilities::MPI::all_gather(comm, local))
       all.insert(all.end(), rank_faces.begin(), rank_faces.end());
     return all;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_integrator()
+  {
+    TimerOutput::Scope       t(*timer, "setup");
+    const SemiDiscreteSystem system{&mass_matrix,
+                                    &stiffness_matrix,
+                                    viscous_matrix.m() > 0 ? &viscous_matrix :
+                                                             nullptr,
+                                    &load,
+                                    parameters.lumped_mass};
+    integrator = std::make_unique<TimeIntegrator>(parameters.scheme,
+                                                  parameters.time_step,
+                                                  system,
+                                                  parameters.solver,
+                                                  locally_owned,
+                                                  locally_relevant,
+                                                  mesh_constraints,
+                                                  rows,
+                                                  constant_modes,
+                                                  comm);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::total_energy() const
+  {
+    VectorType tmp(u);
+    mass_matrix.vmult(tmp, udot);
+    const double kinetic = 0.5 * (tmp * udot);
+    stiffness_matrix.vmult(tmp, u);
+    return kinetic + 0.5 * (tmp * u) - load * u;
   }
 
 
@@ -792,6 +833,13 @@ namespace dyncontact
     if (scene->n_bodies() == 2)
       for (unsigned int d = 0; d < 3; ++d)
         row.push_back(body_momentum[3 + d]);
+    if (parameters.refinement.adaptive())
+      {
+        row.push_back(energy_transfer);
+        row.push_back(transfer_penetration);
+        energy_transfer      = 0.;
+        transfer_penetration = 0.;
+      }
     if (scene->has_exact_solution())
       row.push_back(compute_energy_error(time));
 
@@ -881,6 +929,11 @@ namespace dyncontact
     for (auto &s : subdomain)
       s = triangulation.locally_owned_subdomain();
     data_out.add_data_vector(subdomain, "subdomain");
+    Vector<float> level(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        level(cell->active_cell_index()) = cell->level();
+    data_out.add_data_vector(level, "refinement_level");
     data_out.build_patches(mapping, fe.degree);
 
     const std::string pvtu = data_out.write_vtu_with_pvtu_record(
@@ -953,29 +1006,10 @@ namespace dyncontact
     setup_system();
     assemble_system();
     make_contact_rows();
-    row_evaluator = std::make_unique<ActiveSetSolver>(parameters.solver, comm);
-    row_evaluator->reinit(locally_owned, locally_relevant, mesh_constraints, rows);
+    initial_refinement();
     set_initial_values();
 
-    const SemiDiscreteSystem system{&mass_matrix,
-                                    &stiffness_matrix,
-                                    viscous_matrix.m() > 0 ? &viscous_matrix :
-                                                             nullptr,
-                                    &load,
-                                    parameters.lumped_mass};
-    {
-      TimerOutput::Scope t(*timer, "setup");
-      integrator = std::make_unique<TimeIntegrator>(parameters.scheme,
-                                                    parameters.time_step,
-                                                    system,
-                                                    parameters.solver,
-                                                    locally_owned,
-                                                    locally_relevant,
-                                                    mesh_constraints,
-                                                    rows,
-                                                    constant_modes,
-                                                    comm);
-    }
+    make_integrator();
 
     statistics.columns = {"step",
                           "time",
@@ -1005,6 +1039,11 @@ namespace dyncontact
       for (const std::string column :
            {"momentum_x_body2", "momentum_y_body2", "momentum_z_body2"})
         statistics.columns.push_back(column);
+    if (parameters.refinement.adaptive())
+      {
+        statistics.columns.push_back("energy_transfer");
+        statistics.columns.push_back("transfer_penetration");
+      }
     if (scene->has_exact_solution())
       statistics.columns.push_back("error_energy_norm");
     if (statistics_file.is_open())
@@ -1056,6 +1095,9 @@ namespace dyncontact
             output_results(step, time, report);
             next_output += parameters.output_interval;
           }
+        if (parameters.refinement.interval > 0 && step < n_steps &&
+            step % parameters.refinement.interval == 0)
+          adapt_mesh();
       }
 
     timer->print_summary();

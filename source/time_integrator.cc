@@ -146,6 +146,26 @@ namespace dyncontact
 
 
 
+  void
+  TimeIntegrator::project_onto_constraints(VectorType &u)
+  {
+    StepReport report;
+    VectorType projected(u);
+    project(u, projected, report);
+    u = projected;
+  }
+
+
+
+  void
+  TimeIntegrator::warm_start(const std::vector<char> &active)
+  {
+    displacement_active = active;
+    projection_active   = active;
+  }
+
+
+
   StepReport
   TimeIntegrator::initialize(const VectorType &u, VectorType &udot)
   {

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -144,6 +145,28 @@ namespace testing
 #else
     return {-1, arguments};
 #endif
+  }
+
+  /// Runs a shell command in a clean environment (no MPI variables of this
+  /// process, so that it may start mpirun or pvpython), returns what it
+  /// printed, with a last line "command failed: ..." if it failed.
+  inline std::string
+  run_clean(const std::string &command)
+  {
+    const char       *path = std::getenv("PATH");
+    const std::string full =
+      std::string("env -i PATH='") + (path ? path : "/usr/bin:/bin") +
+      "' HOME=/tmp OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
+      "OMPI_MCA_rmaps_base_oversubscribe=1 " + command + " 2>&1";
+    FILE       *pipe = popen(full.c_str(), "r");
+    std::string text;
+    char        buffer[4096];
+    while (fgets(buffer, sizeof(buffer), pipe) != nullptr)
+      text += buffer;
+    const int status = pclose(pipe);
+    if (status != 0)
+      text += "command failed: " + command + "\n";
+    return text;
   }
 
   /// max_n (E^{n+1} + W^{n+1}) - (E^n + W^n): positive means energy growth.

@@ -8,32 +8,6 @@
 
 #include "tests.h"
 
-#include <cstdio>
-#include <cstdlib>
-
-namespace
-{
-  /// Runs a shell command in a clean environment (no MPI variables of this
-  /// process), returns what it printed.
-  std::string
-  run_clean(const std::string &command)
-  {
-    const char       *path = std::getenv("PATH");
-    const std::string full =
-      std::string("env -i PATH='") + (path ? path : "/usr/bin:/bin") +
-      "' HOME=/tmp OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
-      "OMPI_MCA_rmaps_base_oversubscribe=1 " + command + " 2>&1";
-    FILE       *pipe = popen(full.c_str(), "r");
-    std::string text;
-    char        buffer[4096];
-    while (fgets(buffer, sizeof(buffer), pipe) != nullptr)
-      text += buffer;
-    const int status = pclose(pipe);
-    if (status != 0)
-      text += "command failed: " + command + "\n";
-    return text;
-  }
-} // namespace
 
 int
 main(int argc, char **argv)

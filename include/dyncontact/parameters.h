@@ -3,6 +3,7 @@
 
 #include <dyncontact/active_set_solver.h>
 #include <dyncontact/material.h>
+#include <dyncontact/mesh_refinement.h>
 #include <dyncontact/time_integrator.h>
 
 #include <string>
@@ -39,6 +40,7 @@ namespace dyncontact
     /// Body 1 ("Material") and body 2 ("Material of body 2").
     std::vector<Material>       materials;
     ActiveSetSolver::Parameters solver;
+    MeshRefinementParameters    refinement;
 
     /// Declares every parameter of the program (the scenes' included).
     static void

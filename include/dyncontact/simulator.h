@@ -67,6 +67,19 @@ namespace dyncontact
                 const double       wall_time);
     double
     compute_energy_error(const double time) const;
+    /// E_kin + E_el of the current state.
+    double
+    total_energy() const;
+    /// A new time integrator for the current matrices and rows.
+    void
+    make_integrator();
+    /// Adaptive meshes (source/mesh_refinement.cc).
+    void
+    mark_contact_zone(const VectorType &displacement);
+    void
+    initial_refinement();
+    void
+    adapt_mesh();
     void
     output_results(const unsigned int step,
                    const double       time,
@@ -121,6 +134,10 @@ namespace dyncontact
     std::ofstream statistics_file;
     double        viscous_dissipation   = 0.;
     double        critical_measure_sum  = 0.;
+    /// Energy change and largest K_h violation from mesh transfers since
+    /// the last statistics row.
+    double energy_transfer      = 0.;
+    double transfer_penetration = 0.;
     unsigned int  output_counter        = 0;
     std::vector<std::pair<double, std::string>> pvd_records;
   };

@@ -81,6 +81,14 @@ namespace dyncontact
     StepReport
     step(VectorType &u, VectorType &udot);
 
+    /// u <- P(u), the M-projection onto K_h (after a mesh transfer).
+    void
+    project_onto_constraints(VectorType &u);
+
+    /// Sets the active sets the next solves start from.
+    void
+    warm_start(const std::vector<char> &active);
+
     double
     time_step() const
     {
