@@ -71,6 +71,30 @@ namespace dyncontact
                       "Whether to write VTU/PVTU files and solution.pvd.");
     prm.leave_subsection();
 
+    prm.enter_subsection("Reference solution");
+    prm.declare_entry("Write states",
+                      "false",
+                      Patterns::Bool(),
+                      "Write u and udot every 'Interval' to 'Directory', as "
+                      "the reference for other runs on the same mesh.");
+    prm.declare_entry("Compare with states",
+                      "false",
+                      Patterns::Bool(),
+                      "Read the states of a reference run (same mesh, same "
+                      "number of MPI ranks) from 'Directory' every "
+                      "'Interval' and report the error in the physical "
+                      "energy norm against them (column error_reference).");
+    prm.declare_entry("Directory",
+                      "reference",
+                      Patterns::Anything(),
+                      "Folder of the reference states.");
+    prm.declare_entry("Interval",
+                      "0.1",
+                      Patterns::Double(0.),
+                      "Time between two reference states, in s (> 0; a "
+                      "multiple of the time steps of both runs).");
+    prm.leave_subsection();
+
     Material::declare_parameters(prm, "Material");
     Material::declare_parameters(prm, "Material of body 2");
     ActiveSetSolver::Parameters::declare_parameters(prm);
@@ -133,6 +157,18 @@ namespace dyncontact
                 ExcMessage("Output/Output interval must be a finite number "
                            ">= 0 (s); got " +
                            number(output_interval) + "."));
+
+    prm.enter_subsection("Reference solution");
+    write_reference     = prm.get_bool("Write states");
+    compare_reference   = prm.get_bool("Compare with states");
+    reference_directory = prm.get("Directory");
+    reference_interval  = prm.get_double("Interval");
+    prm.leave_subsection();
+    AssertThrow(!(write_reference && compare_reference),
+                ExcMessage("Reference solution: a run either writes states "
+                           "or compares with them, not both."));
+    AssertThrow(reference_interval > 0.,
+                ExcMessage("Reference solution/Interval must be > 0 (s)."));
 
     materials.resize(2);
     materials[0].parse_parameters(prm, "Material");

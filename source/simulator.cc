@@ -833,6 +833,10 @@ namespace dyncontact
     if (scene->n_bodies() == 2)
       for (unsigned int d = 0; d < 3; ++d)
         row.push_back(body_momentum[3 + d]);
+    if (parameters.compare_reference)
+      row.push_back(process_reference_state(time));
+    else if (parameters.write_reference)
+      process_reference_state(time);
     if (parameters.refinement.adaptive())
       {
         row.push_back(energy_transfer);
@@ -1039,6 +1043,13 @@ namespace dyncontact
       for (const std::string column :
            {"momentum_x_body2", "momentum_y_body2", "momentum_z_body2"})
         statistics.columns.push_back(column);
+    AssertThrow(!(parameters.refinement.interval > 0 &&
+                  (parameters.write_reference || parameters.compare_reference)),
+                ExcMessage("Reference solutions need the same mesh in both "
+                           "runs: they cannot be combined with adaptive "
+                           "meshes (Mesh refinement/Refinement interval > 0)."));
+    if (parameters.compare_reference)
+      statistics.columns.push_back("error_reference");
     if (parameters.refinement.adaptive())
       {
         statistics.columns.push_back("energy_transfer");

@@ -37,6 +37,12 @@ namespace dyncontact
     double output_interval = 0.05;
     bool   write_vtu       = true;
 
+    // subsection Reference solution
+    bool        write_reference    = false;
+    bool        compare_reference  = false;
+    std::string reference_directory;
+    double      reference_interval = 0.1;
+
     /// Body 1 ("Material") and body 2 ("Material of body 2").
     std::vector<Material>       materials;
     ActiveSetSolver::Parameters solver;

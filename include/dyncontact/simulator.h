@@ -67,6 +67,11 @@ namespace dyncontact
                 const double       wall_time);
     double
     compute_energy_error(const double time) const;
+    /// Writes the state as a reference, or returns the energy-norm error
+    /// against the reference state at this time (NaN when there is none;
+    /// source/reference_solution.cc).
+    double
+    process_reference_state(const double time);
     /// E_kin + E_el of the current state.
     double
     total_energy() const;
