@@ -30,7 +30,8 @@ parser = argparse.ArgumentParser(description=__doc__,
 parser.add_argument("--prm", required=True)
 parser.add_argument("--out", required=True)
 parser.add_argument("--executable", default="build/dyncontact")
-parser.add_argument("--work", default="results-study")
+parser.add_argument("--work", default="results-study",
+                    help="runs go to <work>/<name of the CSV>, references to <work>/cache")
 parser.add_argument("--schemes", default="N-CI,N-CS,N-CS++")
 parser.add_argument("--tau0", type=float, required=True)
 parser.add_argument("--tau-levels", default="0,1,2")
@@ -50,7 +51,11 @@ parser.add_argument("--mpi", type=int, default=1, help="MPI ranks per run")
 args = parser.parse_args()
 
 base = open(args.prm).read()
-os.makedirs(os.path.join(args.work, "cache"), exist_ok=True)
+# every study gets its own folder of runs; the reference cache is shared
+cache = os.path.join(args.work, "cache")
+args.work = os.path.join(args.work, os.path.splitext(os.path.basename(args.out))[0])
+os.makedirs(cache, exist_ok=True)
+os.makedirs(args.work, exist_ok=True)
 
 
 def overrides(entries):
@@ -107,7 +112,7 @@ def reference(m):
                "Reference solution/Write states=true",
                "Reference solution/Interval=%.17g" % interval]
     key = hashlib.sha1((base + repr(args.set) + repr(entries) + str(args.mpi)).encode()).hexdigest()[:12]
-    directory = os.path.join(args.work, "cache", key)
+    directory = os.path.join(cache, key)
     entries.append("Reference solution/Directory=" + directory + "/states")
     if os.path.exists(directory + "/statistics.tsv"):
         rows = list(csv.DictReader(open(directory + "/statistics.tsv"), delimiter="\t"))

@@ -8,6 +8,7 @@
 #include <dyncontact/active_set_solver.h>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 
 namespace dyncontact
@@ -50,6 +51,14 @@ namespace dyncontact
                       "2000",
                       Patterns::Integer(1),
                       "Largest number of CG iterations per linear system.");
+    prm.declare_entry("Initial penetration",
+                      "reject",
+                      Patterns::Selection("reject|project"),
+                      "What to do with an initial configuration that "
+                      "penetrates (a slave node inside the obstacle or the "
+                      "master body): reject it with a message, or project "
+                      "the initial displacement onto K_h (the M-projection) "
+                      "with a warning that says by how much.");
     prm.leave_subsection();
   }
 
@@ -60,6 +69,7 @@ namespace dyncontact
     max_iterations        = prm.get_integer("Maximum active-set iterations");
     linear_tolerance      = prm.get_double("Linear solver tolerance");
     max_linear_iterations = prm.get_integer("Maximum linear iterations");
+    project_initial_penetration = (prm.get("Initial penetration") == "project");
     prm.leave_subsection();
     AssertThrow(linear_tolerance > 0. && linear_tolerance < 1.,
                 ExcMessage("Contact solver/Linear solver tolerance must lie in "
@@ -322,8 +332,9 @@ namespace dyncontact
     if (pointwise)
       return solve_pointwise(r, v, active, multipliers);
 
-    Result                    result;
-    AffineConstraints<double> constraints, homogeneous;
+    Result                        result;
+    std::set<std::vector<char>>   visited;
+    AffineConstraints<double>     constraints, homogeneous;
     VectorType                x(r), b(r), k(r), residual(r);
     const double              r_norm = r.l2_norm();
 
@@ -438,14 +449,45 @@ namespace dyncontact
                             1 :
                             0;
 
-        if (new_active == active)
+        result.residual = 0.;
+        for (unsigned int p = 0; p < rows->size(); ++p)
+          result.residual =
+            std::max(result.residual,
+                     std::abs(std::min(multipliers[p] / row_scaling[p],
+                                       -violation[p])));
+        // converged: the active set is unchanged, or it still changes only
+        // on degenerate rows (touching with zero force) while the
+        // complementarity conditions hold to the displacement tolerance
+        if (new_active == active || result.residual <= delta)
           break;
-        active = new_active;
         if (result.iterations >= parameters.max_iterations)
           {
             result.converged = false;
             break;
           }
+        // cycling between active sets ("ping-pong"): damp the iteration by
+        // changing only the row that violates its condition the most
+        visited.insert(active);
+        if (visited.count(new_active))
+          {
+            result.cycled   = true;
+            unsigned int worst = 0;
+            double       size  = -1.;
+            for (unsigned int p = 0; p < rows->size(); ++p)
+              if (new_active[p] != active[p])
+                {
+                  const double c = std::abs(multipliers[p] / row_scaling[p] +
+                                            violation[p]);
+                  if (c > size)
+                    {
+                      size  = c;
+                      worst = p;
+                    }
+                }
+            new_active        = active;
+            new_active[worst] = !active[worst];
+          }
+        active = new_active;
       }
     return result;
   }

@@ -81,7 +81,9 @@ namespace dyncontact
                       "0.1",
                       Patterns::Double(),
                       "Bar impact: distance g0 between the bar's end x = 0 "
-                      "and the wall at x = -g0, in m (>= 0).");
+                      "and the wall at x = -g0, in m (negative: the bar "
+                      "starts inside the wall; see Contact "
+                      "solver/Initial penetration).");
     prm.declare_entry("Cells along length",
                       "40",
                       Patterns::Integer(1),
@@ -148,9 +150,9 @@ namespace dyncontact
     AssertThrow(std::isfinite(axial_body_force) && std::isfinite(end_traction),
                 ExcMessage("Scene/Body force and Scene/End traction must be "
                            "finite numbers."));
-    AssertThrow(std::isfinite(initial_gap) && initial_gap >= 0.,
-                ExcMessage(
-                  "Scene/Initial gap must be a finite number >= 0 (m)."));
+    AssertThrow(std::isfinite(initial_gap),
+                ExcMessage("Scene/Initial gap must be a finite number (m; "
+                           "negative: the bar starts inside the wall)."));
     AssertThrow(std::isfinite(initial_strain) && initial_strain > -1.,
                 ExcMessage(
                   "Scene/Initial strain must be a finite number > -1."));
@@ -287,7 +289,8 @@ namespace dyncontact
   {
     // the 1D solution is exact for nu = 0 and an elastic bar
     return mat.poissons_ratio == 0. && !mat.is_viscous() &&
-           initial_strain == 0. && impact_velocity > 0. && !fixed_far_end &&
+           initial_strain == 0. && impact_velocity > 0. && initial_gap >= 0. &&
+           !fixed_far_end &&
            axial_body_force == 0. && end_traction == 0.;
   }
 

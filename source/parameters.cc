@@ -44,6 +44,12 @@ namespace dyncontact
                       Patterns::Double(),
                       "Final time T, in s (>= 0). If T is not a multiple of "
                       "tau, the last step ends after T.");
+    prm.declare_entry("Time step adaptation",
+                      "false",
+                      Patterns::Bool(),
+                      "If a step's active-set iteration fails, retry it with "
+                      "half the time step (and keep that), down to Time step "
+                      "/ 1024; otherwise the run stops with a message.");
     prm.declare_entry("Mass matrix",
                       "lumped",
                       Patterns::Selection("lumped|consistent"),
@@ -69,6 +75,29 @@ namespace dyncontact
                       "true",
                       Patterns::Bool(),
                       "Whether to write VTU/PVTU files and solution.pvd.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Checkpointing");
+    prm.declare_entry("Interval in steps",
+                      "0",
+                      Patterns::Integer(0),
+                      "Write a checkpoint every this many steps (0: not by "
+                      "steps). Checkpoints go to <Output directory>/"
+                      "checkpoints; each is written to a new folder and only "
+                      "then marked as the last good one.");
+    prm.declare_entry("Interval in minutes",
+                      "0",
+                      Patterns::Double(0.),
+                      "Write a checkpoint when this much wall-clock time (in "
+                      "minutes) has passed since the last one (0: not by "
+                      "time).");
+    prm.declare_entry("Resume",
+                      "false",
+                      Patterns::Bool(),
+                      "Continue from the last good checkpoint in <Output "
+                      "directory>/checkpoints. The prm must agree with the "
+                      "checkpoint's in everything but End time, subsection "
+                      "Output and subsection Checkpointing.");
     prm.leave_subsection();
 
     prm.enter_subsection("Reference solution");
@@ -131,6 +160,7 @@ namespace dyncontact
     time_step   = prm.get_double("Time step");
     end_time    = prm.get_double("End time");
     lumped_mass = (prm.get("Mass matrix") == "lumped");
+    time_step_adaptation = prm.get_bool("Time step adaptation");
     prm.leave_subsection();
     AssertThrow(std::isfinite(time_step) && time_step > 0.,
                 ExcMessage("Time integration/Time step must be a finite "
@@ -157,6 +187,49 @@ namespace dyncontact
                 ExcMessage("Output/Output interval must be a finite number "
                            ">= 0 (s); got " +
                            number(output_interval) + "."));
+
+    prm.enter_subsection("Checkpointing");
+    checkpoint_steps   = prm.get_integer("Interval in steps");
+    checkpoint_minutes = prm.get_double("Interval in minutes");
+    resume             = prm.get_bool("Resume");
+    prm.leave_subsection();
+
+    // the critical parameters: the whole input in a canonical form, less
+    // what a resumed run may change
+    {
+      std::ostringstream all;
+      prm.print_parameters(all, ParameterHandler::ShortPRM);
+      std::istringstream       in(all.str());
+      std::vector<std::string> path;
+      for (std::string line; std::getline(in, line);)
+        {
+          const auto first = line.find_first_not_of(' ');
+          if (first == std::string::npos)
+            continue;
+          line = line.substr(first);
+          if (line.rfind("subsection ", 0) == 0)
+            path.push_back(line.substr(11));
+          else if (line == "end")
+            path.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            {
+              const std::string entry = line.substr(4, line.find('=') - 4);
+              const bool skip =
+                (!path.empty() &&
+                 (path[0] == "Output" || path[0] == "Checkpointing")) ||
+                (path.empty() && entry.rfind("Output directory", 0) == 0) ||
+                (!path.empty() && path[0] == "Time integration" &&
+                 entry.rfind("End time", 0) == 0);
+              if (!skip)
+                {
+                  std::string name;
+                  for (const auto &p : path)
+                    name += p + "/";
+                  critical_parameters += name + line.substr(4) + "\n";
+                }
+            }
+        }
+    }
 
     prm.enter_subsection("Reference solution");
     write_reference     = prm.get_bool("Write states");

@@ -93,6 +93,7 @@ namespace dyncontact
     , dof_handler(triangulation)
     , scalar_fe(parameters.degree)
     , scalar_dof_handler(triangulation)
+    , current_tau(parameters.time_step)
   {}
 
 
@@ -465,13 +466,21 @@ namespace dyncontact
               row.position[d] = x[d];
             }
           row.gap = (x - obstacle->point) * obstacle->normal;
-          AssertThrow(row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
+          AssertThrow(std::isfinite(row.gap),
+                      ExcMessage("The gap of the node at (" +
+                                 Utilities::to_string(x[0]) + ", " +
+                                 Utilities::to_string(x[1]) +
+                                 ", ...) to the obstacle is not finite."));
+          AssertThrow(parameters.solver.project_initial_penetration ||
+                        row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
                       ExcMessage("The initial configuration penetrates the "
                                  "obstacle: the node at (" +
                                  Utilities::to_string(x[0]) + ", " +
                                  Utilities::to_string(x[1]) + ", ...) lies " +
                                  Utilities::to_string(-row.gap) +
-                                 " m inside it."));
+                                 " m inside it. Correct the scene, or set "
+                                 "'Contact solver/Initial penetration = "
+                                 "project'."));
           if (finish_row(row))
             local_rows.emplace_back(row, scalar_dof);
         });
@@ -516,17 +525,29 @@ namespace dyncontact
             const auto image = phi.find_image(x);
             if (!image)
               return;
-            AssertThrow((x - image->point) * image->master_normal >=
-                          -1e-10 * pair.search_radius,
+            auto       projection = *image;
+            const bool inside = (x - image->point) * image->master_normal <
+                                -1e-10 * pair.search_radius;
+            AssertThrow(parameters.solver.project_initial_penetration ||
+                          !inside,
                         ExcMessage(
                           "The initial configuration penetrates: the slave "
                           "node at (" +
                           Utilities::to_string(x[0]) + ", " +
                           Utilities::to_string(x[1]) +
                           ", ...) lies inside the master body by " +
-                          Utilities::to_string(image->gap) + " m."));
+                          Utilities::to_string(image->gap) +
+                          " m. Correct the mesh, or set 'Contact "
+                          "solver/Initial penetration = project'."));
+            if (inside)
+              {
+                // a negative gap along the master's normal: the row asks
+                // for the node to be moved out
+                projection.normal = -image->master_normal;
+                projection.gap    = -image->gap;
+              }
             ContactRow row = make_two_body_row<dim>(
-              x, dofs, *image, phi.faces()[image->face], fe.degree);
+              x, dofs, projection, phi.faces()[image->face], fe.degree);
             if (finish_row(row))
               local_rows.emplace_back(row, scalar_dof);
           });
@@ -621,7 +642,7 @@ namespace dyncontact
                                     &load,
                                     parameters.lumped_mass};
     integrator = std::make_unique<TimeIntegrator>(parameters.scheme,
-                                                  parameters.time_step,
+                                                  current_tau,
                                                   system,
                                                   parameters.solver,
                                                   locally_owned,
@@ -743,7 +764,7 @@ namespace dyncontact
                               const double       wall_time)
   {
     TimerOutput::Scope t(*timer, "diagnostics");
-    const double       tau          = parameters.time_step;
+    const double       tau          = integrator->time_step();
     const double       force_factor = integrator->force_factor();
 
     VectorType tmp(u);
@@ -982,14 +1003,19 @@ namespace dyncontact
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << std::endl;
 
+    // the output directory must be writable; nothing in it is touched
+    // before the setup has succeeded
+    bool writable = true;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::error_code error;
         std::filesystem::create_directories(parameters.output_directory, error);
-        statistics_file.open(parameters.output_directory + "/statistics.tsv");
+        const std::string probe =
+          parameters.output_directory + "/.dyncontact-write-test";
+        writable = std::ofstream(probe).good();
+        std::filesystem::remove(probe, error);
       }
-    const bool writable = Utilities::MPI::broadcast(
-      comm, Utilities::MPI::this_mpi_process(comm) != 0 || statistics_file.good(), 0);
+    writable = Utilities::MPI::broadcast(comm, writable, 0);
     AssertThrow(writable,
                 ExcMessage("Output directory '" + parameters.output_directory +
                            "' cannot be created or written."));
@@ -997,8 +1023,11 @@ namespace dyncontact
     {
       TimerOutput::Scope t(*timer, "setup");
       scene->create_coarse_mesh(triangulation);
-      triangulation.refine_global(parameters.initial_refinements);
-      scene->refine_initial_mesh(triangulation);
+      if (!parameters.resume)
+        {
+          triangulation.refine_global(parameters.initial_refinements);
+          scene->refine_initial_mesh(triangulation);
+        }
       for (const auto &cell : triangulation.active_cell_iterators())
         AssertThrow(cell->material_id() < scene->n_bodies(),
                     ExcMessage("A cell of the mesh has material id " +
@@ -1007,13 +1036,15 @@ namespace dyncontact
                                std::to_string(scene->n_bodies()) +
                                " bodies (ids 0 to n-1)."));
     }
-    setup_system();
-    assemble_system();
-    make_contact_rows();
-    initial_refinement();
-    set_initial_values();
-
-    make_integrator();
+    if (!parameters.resume)
+      {
+        setup_system();
+        assemble_system();
+        make_contact_rows();
+        initial_refinement();
+        set_initial_values();
+        make_integrator();
+      }
 
     statistics.columns = {"step",
                           "time",
@@ -1057,58 +1088,140 @@ namespace dyncontact
       }
     if (scene->has_exact_solution())
       statistics.columns.push_back("error_energy_norm");
-    if (statistics_file.is_open())
-      statistics.write_header(statistics_file);
-
-    StepReport report;
-    {
-      TimerOutput::Scope t(*timer, "time step");
-      report = integrator->initialize(u, udot);
-    }
-    record_step(0, 0., report, 0.);
-    if (parameters.write_vtu)
-      output_results(0, 0., report);
-
-    const double       tau     = parameters.time_step;
-    // the static problem is solved once, at t = End time
-    const unsigned int n_steps =
-      parameters.scheme == Scheme::quasi_static ?
-        1 :
-        static_cast<unsigned int>(std::ceil(parameters.end_time / tau - 1e-9));
-    double next_output = parameters.output_interval;
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    unsigned int step        = 0;
+    double       time        = 0.;
+    double       next_output = parameters.output_interval;
+    StepReport   report;
+    if (parameters.resume)
+      resume_from_checkpoint(step, time, next_output);
+    else
       {
-        const double time = parameters.scheme == Scheme::quasi_static ?
-                              parameters.end_time :
-                              step * tau;
-        Timer        step_timer;
-        u_old = u;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            statistics_file.open(parameters.output_directory +
+                                 "/statistics.tsv");
+            statistics.write_header(statistics_file);
+          }
+
+        // an initially penetrating configuration (allowed only with
+        // 'Initial penetration = project'): the M-projection onto K_h
+        const auto violation = row_evaluator->constraint_values(u);
+        double     largest   = 0.;
+        for (const double v : violation)
+          largest = std::max(largest, v);
+        if (largest > 1e-12)
+          {
+            integrator->project_onto_constraints(u);
+            pcout << "   warning: the initial configuration penetrated by up "
+                     "to "
+                  << largest
+                  << " m; the initial displacement was projected onto K_h."
+                  << std::endl;
+          }
+
+        {
+          TimerOutput::Scope t(*timer, "time step");
+          report = integrator->initialize(u, udot);
+        }
+        record_step(0, 0., report, 0.);
+        if (parameters.write_vtu)
+          output_results(0, 0., report);
+      }
+
+    // the static problem is solved once, at t = End time
+    const bool is_static = parameters.scheme == Scheme::quasi_static;
+    auto       more      = [&]() {
+      return is_static ? step < 1 :
+                         time < parameters.end_time - 1e-9 * current_tau;
+    };
+    // t = t_base + n tau, so that times do not accumulate round-off
+    double       time_base   = time;
+    unsigned int steps_since = 0;
+    Timer        since_checkpoint;
+    while (more())
+      {
+        Timer step_timer;
+        u_old    = u;
+        udot_old = udot;
         {
           TimerOutput::Scope t(*timer, "time step");
           report = integrator->step(u, udot);
         }
-        AssertThrow(report.displacement_solve.converged &&
-                      report.projection_solve.converged,
-                    ExcMessage("The active-set iteration did not converge "
-                               "within 'Contact solver/Maximum active-set "
-                               "iterations' at step " +
-                               std::to_string(step) + ", t = " +
-                               std::to_string(time) + " s."));
-        AssertThrow(std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm()),
-                    ExcMessage("The solution is not finite at step " +
-                               std::to_string(step) + ", t = " +
-                               std::to_string(time) + " s."));
+        const bool good = report.displacement_solve.converged &&
+                          report.projection_solve.converged &&
+                          std::isfinite(u.l2_norm()) &&
+                          std::isfinite(udot.l2_norm());
+        if (!good)
+          {
+            // back to the last good state
+            u    = u_old;
+            udot = udot_old;
+            if (parameters.time_step_adaptation && !is_static &&
+                current_tau > parameters.time_step / 1024. * (1. + 1e-12))
+              {
+                current_tau /= 2.;
+                time_base   = time;
+                steps_since = 0;
+                pcout << "   warning: step " << step + 1 << " (t = " << time
+                      << " s) failed; retrying with tau = " << current_tau
+                      << " s" << std::endl;
+                const auto active = integrator->active_sets();
+                make_integrator();
+                integrator->warm_start(active.first, active.second);
+                continue;
+              }
+            const std::string dir = write_checkpoint(step, time, next_output);
+            const double      residual =
+              std::max(report.displacement_solve.residual,
+                       report.projection_solve.residual);
+            AssertThrow(false,
+                        ExcMessage(
+                          std::string("step ") + std::to_string(step + 1) +
+                          " (from t = " + Utilities::to_string(time) +
+                          " s, tau = " + Utilities::to_string(current_tau) +
+                          " s) failed: " +
+                          (std::isfinite(u.l2_norm()) ?
+                             "the active-set iteration did not converge "
+                             "within 'Contact solver/Maximum active-set "
+                             "iterations' (complementarity residual " +
+                               Utilities::to_string(residual) + " m)" :
+                             std::string("the solution is not finite")) +
+                          ". The last good state (step " +
+                          std::to_string(step) + ") is the checkpoint '" + dir +
+                          "' (resume with 'Checkpointing/Resume = true'), or "
+                          "set 'Time integration/Time step adaptation = "
+                          "true'."));
+          }
+        ++step;
+        ++steps_since;
+        time = is_static ? parameters.end_time :
+                           time_base + steps_since * current_tau;
         step_timer.stop();
         record_step(step, time, report, step_timer.wall_time());
         if (parameters.write_vtu &&
-            (time >= next_output - 1e-9 * tau || step == n_steps))
+            (time >= next_output - 1e-9 * current_tau || !more()))
           {
             output_results(step, time, report);
             next_output += parameters.output_interval;
           }
-        if (parameters.refinement.interval > 0 && step < n_steps &&
+        if (parameters.refinement.interval > 0 && more() &&
             step % parameters.refinement.interval == 0)
           adapt_mesh();
+
+        bool checkpoint = parameters.checkpoint_steps > 0 &&
+                          step % parameters.checkpoint_steps == 0;
+        if (parameters.checkpoint_minutes > 0.)
+          checkpoint =
+            checkpoint ||
+            Utilities::MPI::broadcast(comm,
+                                      since_checkpoint.wall_time() >
+                                        60. * parameters.checkpoint_minutes,
+                                      0);
+        if (checkpoint)
+          {
+            write_checkpoint(step, time, next_output);
+            since_checkpoint.restart();
+          }
       }
 
     timer->print_summary();

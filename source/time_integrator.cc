@@ -158,10 +158,14 @@ namespace dyncontact
 
 
   void
-  TimeIntegrator::warm_start(const std::vector<char> &active)
+  TimeIntegrator::warm_start(const std::vector<char> &active,
+                             const std::vector<char> &projection)
   {
-    displacement_active = active;
-    projection_active   = active;
+    if (active.size() == rows->size())
+      displacement_active = active;
+    const std::vector<char> &p = projection.empty() ? active : projection;
+    if (p.size() == rows->size())
+      projection_active = p;
   }
 
 

@@ -51,6 +51,9 @@ namespace dyncontact
       unsigned int max_iterations     = 50;
       double       linear_tolerance   = 1e-12;
       unsigned int max_linear_iterations = 2000;
+      /// An initially penetrating configuration: rejected, or projected
+      /// onto K_h with a warning.
+      bool project_initial_penetration = false;
 
       /// Declares subsection "Contact solver".
       static void
@@ -64,6 +67,10 @@ namespace dyncontact
       unsigned int iterations        = 0;
       unsigned int linear_iterations = 0;
       bool         converged         = true;
+      /// max_p |min(mu_p / c_p, g_p - (C v)_p)| at the last iterate (m)
+      double residual = 0.;
+      /// whether the iteration revisited an active set (and was damped)
+      bool cycled = false;
     };
 
     ActiveSetSolver(const Parameters &parameters, const MPI_Comm comm);

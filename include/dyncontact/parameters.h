@@ -37,6 +37,17 @@ namespace dyncontact
     double output_interval = 0.05;
     bool   write_vtu       = true;
 
+    // subsection Checkpointing
+    unsigned int checkpoint_steps   = 0;
+    double       checkpoint_minutes = 0.;
+    bool         resume             = false;
+    /// The parameters a resumed run must share with its checkpoint (all but
+    /// End time, Output, Checkpointing), as text.
+    std::string critical_parameters;
+
+    // subsection Time integration: retry a failed step with tau/2
+    bool time_step_adaptation = false;
+
     // subsection Reference solution
     bool        write_reference    = false;
     bool        compare_reference  = false;

@@ -67,6 +67,17 @@ namespace dyncontact
                 const double       wall_time);
     double
     compute_energy_error(const double time) const;
+    /// Checkpoints (source/checkpoint.cc).
+    std::string
+    checkpoint_root() const;
+    std::string
+    write_checkpoint(const unsigned int step,
+                     const double       time,
+                     const double       next_output);
+    void
+    resume_from_checkpoint(unsigned int &step,
+                           double       &time,
+                           double       &next_output);
     /// Writes the state as a reference, or returns the energy-norm error
     /// against the reference state at this time (NaN when there is none;
     /// source/reference_solution.cc).
@@ -134,6 +145,9 @@ namespace dyncontact
     VectorType                      u;
     VectorType                      udot;
     VectorType                      u_old;
+    VectorType                      udot_old;
+    /// The time step in use (Time step adaptation may halve it).
+    double current_tau;
 
     Statistics    statistics;
     std::ofstream statistics_file;

@@ -85,9 +85,18 @@ namespace dyncontact
     void
     project_onto_constraints(VectorType &u);
 
-    /// Sets the active sets the next solves start from.
+    /// Sets the active sets the next solves start from (displacement step
+    /// and projection; the second defaults to the first).
     void
-    warm_start(const std::vector<char> &active);
+    warm_start(const std::vector<char> &active,
+               const std::vector<char> &projection = {});
+
+    /// The warm-start active sets (displacement step, projection).
+    std::pair<std::vector<char>, std::vector<char>>
+    active_sets() const
+    {
+      return {displacement_active, projection_active};
+    }
 
     double
     time_step() const
