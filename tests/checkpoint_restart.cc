@@ -1,0 +1,92 @@
+// Checkpoint/restart: a run stopped at half time (with a checkpoint there)
+// and resumed with 'Resume = true' gives the same statistics (every column
+// but the wall times, to 1e-10 relative) and the same final state as the
+// uninterrupted run: for the bar impact (N-CS++) and for an adaptive
+// two-bars run (the refined mesh is saved and loaded with p4est). A resumed
+// input whose critical parameters differ (the time step) is refused with a
+// message naming the parameter. Also on two MPI ranks
+// (checkpoint_restart.mpirun=2) with the same output.
+
+#include "tests.h"
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  const std::string adaptive = "subsection Scene\n  set Name = two bars\n"
+                               "  set Cells across = 1\n"
+                               "  set Cells across body 2 = 2\nend\n"
+                               "subsection Mesh refinement\n"
+                               "  set Refinement interval = 4\n"
+                               "  set Maximum level = 2\n"
+                               "  set Refine fraction = 0.3\n"
+                               "  set Coarsen fraction = 0.1\n"
+                               "  set Criteria = kelly velocity, contact zone\n"
+                               "end\n";
+  for (const auto &[name, extra] :
+       {std::make_pair(std::string("bar impact"), std::string()),
+        std::make_pair(std::string("adaptive two bars"), adaptive)})
+    {
+      const std::string dir = name == "bar impact" ? "bar" : "two-bars";
+      auto prm = [&](const std::string &run, const double end, const bool resume) {
+        return bar_prm(2, "N-CS++", 10, 0.025, end, extra) +
+               "set Output directory = results-" + dir + "-" + run + "\n" +
+               "subsection Checkpointing\n  set Interval in steps = 50\n" +
+               "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
+      };
+      const Statistics full = run(prm("full", 2.5, false));
+      run(prm("split", 1.25, false));
+      const Statistics resumed = run(prm("split", 2.5, true));
+
+      // each column relative to its largest value, but at least 1e-2, the
+      // physical scale here (each bar's momentum, the energies): columns
+      // that are zero up to round-off (momentum_y) or small differences of
+      // large quantities (the total momentum of two bars) are compared to it
+      double      difference = 0.;
+      std::string worst;
+      bool        same_shape = full.rows.size() == resumed.rows.size() &&
+                        full.columns == resumed.columns;
+      for (unsigned int c = 0; same_shape && c < full.columns.size(); ++c)
+        if (full.columns[c] != "step_wall_time")
+          {
+            double scale = 1e-2, d = 0.;
+            for (unsigned int i = 0; i < full.rows.size(); ++i)
+              {
+                scale = std::max(scale, std::abs(full.rows[i][c]));
+                d = std::max(d, std::abs(full.rows[i][c] - resumed.rows[i][c]));
+              }
+            if (d / scale > difference)
+              {
+                difference = d / scale;
+                worst      = full.columns[c];
+              }
+          }
+      std::cout << name << ": largest difference " << difference << " in "
+                << worst << std::endl;
+      log() << name << ": " << full.rows.size() - 1 << " steps; resumed at "
+            << "half time, the statistics agree to 1e-10: "
+            << check(same_shape && difference <= 1e-10) << "\n";
+      log() << "  final energy " << fmt(resumed.column("energy_total").back(), 6)
+            << ", momentum " << fmt(resumed.column("momentum_x").back(), 6)
+            << "\n";
+    }
+
+  // a changed time step is refused
+  std::string message;
+  try
+    {
+      run(bar_prm(2, "N-CS++", 10, 0.0125, 2.5) +
+          "set Output directory = results-bar-split\n"
+          "subsection Checkpointing\n  set Resume = true\nend\n");
+    }
+  catch (const std::exception &e)
+    {
+      message = e.what();
+    }
+  log() << "a different time step is refused, naming it: "
+        << check(message.find("Time integration/Time step") !=
+                 std::string::npos)
+        << "\n";
+}
