@@ -214,12 +214,22 @@ namespace dyncontact
           else if (line.rfind("set ", 0) == 0)
             {
               const std::string entry = line.substr(4, line.find('=') - 4);
+              // a resumed run may change the end time, the output, the
+              // checkpointing, and the solver's limits (to get past a step
+              // that failed)
+              auto is = [&](const std::string &section,
+                            const std::string &name) {
+                return path.size() == 1 && path[0] == section &&
+                       entry.rfind(name, 0) == 0;
+              };
               const bool skip =
                 (!path.empty() &&
                  (path[0] == "Output" || path[0] == "Checkpointing")) ||
                 (path.empty() && entry.rfind("Output directory", 0) == 0) ||
-                (!path.empty() && path[0] == "Time integration" &&
-                 entry.rfind("End time", 0) == 0);
+                is("Time integration", "End time") ||
+                is("Time integration", "Time step adaptation") ||
+                is("Contact solver", "Maximum active-set iterations") ||
+                is("Contact solver", "Maximum linear iterations");
               if (!skip)
                 {
                   std::string name;

@@ -246,8 +246,9 @@ namespace dyncontact
                                          lumped_face_quadrature,
                                          update_values | update_JxW_values);
 
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
+    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    std::vector<double> bad_cell; // centre and body of an inverted cell
+    FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
     FullMatrix<double> cell_stiffness(dofs_per_cell, dofs_per_cell);
     FullMatrix<double> cell_viscous(dofs_per_cell, dofs_per_cell);
     Vector<double>     cell_load(dofs_per_cell);
@@ -273,6 +274,15 @@ namespace dyncontact
           const auto      body_force = scene->body_force(cell->material_id());
           fe_values.reinit(cell);
           mass_values.reinit(cell);
+          // an inverted or twisted cell (which deal.II does not reject on
+          // reading) has a non-positive Jacobian somewhere
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            if (!(fe_values.JxW(q) > 0.) && bad_cell.empty())
+              {
+                for (unsigned int d = 0; d < dim; ++d)
+                  bad_cell.push_back(cell->center()[d]);
+                bad_cell.push_back(cell->material_id() + 1);
+              }
 
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
@@ -350,6 +360,22 @@ namespace dyncontact
 
     mass_matrix.compress(VectorOperation::add);
     stiffness_matrix.compress(VectorOperation::add);
+    for (const auto &rank_bad : Utilities::MPI::all_gather(comm, bad_cell))
+      if (!rank_bad.empty())
+        {
+          std::ostringstream where;
+          where << "(" << rank_bad[0];
+          for (unsigned int d = 1; d < dim; ++d)
+            where << ", " << rank_bad[d];
+          where << ")";
+          AssertThrow(false,
+                      ExcMessage("The mesh has an inverted or twisted cell "
+                                 "(non-positive Jacobian) at " +
+                                 where.str() + " in body " +
+                                 std::to_string(int(rank_bad[dim])) +
+                                 "; check the mesh (file) and the order of "
+                                 "the cell's vertices."));
+        }
     if (viscous)
       viscous_matrix.compress(VectorOperation::add);
     load.compress(VectorOperation::add);
@@ -1174,23 +1200,22 @@ namespace dyncontact
             const double      residual =
               std::max(report.displacement_solve.residual,
                        report.projection_solve.residual);
-            AssertThrow(false,
-                        ExcMessage(
-                          std::string("step ") + std::to_string(step + 1) +
-                          " (from t = " + Utilities::to_string(time) +
-                          " s, tau = " + Utilities::to_string(current_tau) +
-                          " s) failed: " +
-                          (std::isfinite(u.l2_norm()) ?
-                             "the active-set iteration did not converge "
-                             "within 'Contact solver/Maximum active-set "
-                             "iterations' (complementarity residual " +
-                               Utilities::to_string(residual) + " m)" :
-                             std::string("the solution is not finite")) +
-                          ". The last good state (step " +
-                          std::to_string(step) + ") is the checkpoint '" + dir +
-                          "' (resume with 'Checkpointing/Resume = true'), or "
-                          "set 'Time integration/Time step adaptation = "
-                          "true'."));
+            std::ostringstream message;
+            message << std::setprecision(6) << "step " << step + 1
+                    << " (from t = " << time << " s, tau = " << current_tau
+                    << " s) failed: ";
+            if (std::isfinite(u.l2_norm()))
+              message << "the active-set iteration did not converge within "
+                         "'Contact solver/Maximum active-set iterations' "
+                         "(complementarity residual "
+                      << std::setprecision(3) << residual << " m)";
+            else
+              message << "the solution is not finite";
+            message << ". The last good state (step " << step
+                    << ") is the checkpoint '" << dir
+                    << "' (resume with 'Checkpointing/Resume = true'), or "
+                       "set 'Time integration/Time step adaptation = true'.";
+            AssertThrow(false, ExcMessage(message.str()));
           }
         ++step;
         ++steps_since;

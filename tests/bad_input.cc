@@ -57,6 +57,25 @@ main(int argc, char **argv)
     {"syntax_error", "subsection Material\n  Young's modulus 3\nend\n"},
     {"unclosed_subsection", "subsection Material\n"},
     {"output_directory_unwritable", "set Output directory = a_file/sub\n"},
+    {"youngs_modulus_nan", "subsection Material\n  set Young's modulus = nan\nend\n"},
+    {"time_step_inf", "subsection Time integration\n  set Time step = inf\nend\n"},
+    {"initial_gap_nan", "subsection Scene\n  set Initial gap = nan\nend\n"},
+    {"output_interval_negative", "subsection Output\n  set Output interval = -1\nend\n"},
+    {"degree_zero", "set Polynomial degree = 0\n"},
+    {"refinement_levels_inverted",
+     "subsection Mesh refinement\n  set Minimum level = 3\n"
+     "  set Maximum level = 1\nend\n"},
+    {"reference_with_adaptive_mesh",
+     "subsection Mesh refinement\n  set Refinement interval = 2\nend\n"
+     "subsection Reference solution\n  set Compare with states = true\nend\n"},
+    {"resume_without_checkpoint",
+     "set Output directory = never-run\n"
+     "subsection Checkpointing\n  set Resume = true\nend\n"},
+    {"solver_tolerance_one",
+     "subsection Contact solver\n  set Linear solver tolerance = 1\nend\n"},
+    {"hertz_in_3d", "set Dimension = 3\nsubsection Scene\n  set Name = hertz\nend\n"},
+    {"negative_load",
+     "subsection Scene\n  set Name = hertz\n  set Load = -1\nend\n"},
   };
   std::ofstream("a_file") << "not a directory\n";
 

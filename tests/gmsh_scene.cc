@@ -59,7 +59,17 @@ main(int argc, char **argv)
                               "  set Contact tags of body 2 =\n"
                               "  set Dirichlet tags =\n"},
     {"bad_velocity", "  set Initial velocity of body 2 = 1\n"},
+    {"twisted_cell", "  set Mesh file = twisted.msh\n"
+                     "  set Contact tags of body 1 =\n"
+                     "  set Contact tags of body 2 =\n"
+                     "  set Dirichlet tags =\n"},
   };
+  // two quadrilaterals, the first with its vertices in a twisted order
+  std::ofstream("twisted.msh")
+    << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n"
+    << "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 2 0\n6 1 2 0\n7 1 3 0\n"
+    << "8 0 3 0\n$EndNodes\n$Elements\n2\n1 3 2 1 1 1 2 4 3\n"
+    << "2 3 2 2 2 5 6 7 8\n$EndElements\n";
   for (const auto &[name, text] : cases)
     {
       std::ofstream(name + ".prm")
@@ -85,4 +95,21 @@ main(int argc, char **argv)
             << "\n"
             << message << "\n";
     }
+
+  // a failing input leaves the previous output in its directory alone
+  std::ifstream      before_in("results-gmsh/statistics.tsv");
+  std::stringstream  before;
+  before << before_in.rdbuf();
+  std::ofstream("overwrite.prm")
+    << "set Dimension = 2\nset Output directory = results-gmsh\n"
+    << "subsection Scene\n  set Name = gmsh\n  set Mesh file = corrupt.msh\n"
+    << "end\n";
+  const Outcome     failed = run_program("overwrite.prm");
+  std::ifstream     after_in("results-gmsh/statistics.tsv");
+  std::stringstream after;
+  after << after_in.rdbuf();
+  log() << "a failing run leaves the previous statistics.tsv alone: "
+        << check(failed.status != 0 && !before.str().empty() &&
+                 before.str() == after.str())
+        << "\n";
 }

@@ -1,0 +1,98 @@
+// When the active-set iteration fails (here: at most 2 iterations, N-CI,
+// a soft block dropping onto one 1e4 times stiffer, which needs 3 in step
+// 38): the executable stops with exit status 1 and a message naming the
+// step, the time and the complementarity residual, having written the last
+// good state as a checkpoint; resumed from it with a larger iteration limit
+// the run completes and ends exactly as an uninterrupted run with that
+// limit. With 'Time step adaptation = true' the failed step is retried with
+// tau/2 and the run gets past the time where it failed before.
+
+#include "tests.h"
+
+#include <filesystem>
+
+namespace
+{
+  std::vector<double>
+  last_row(const std::string &file)
+  {
+    std::ifstream in(file);
+    std::string   line, last;
+    while (std::getline(in, line))
+      if (!line.empty())
+        last = line;
+    std::vector<double> values;
+    std::stringstream   s(last);
+    for (std::string cell; std::getline(s, cell, '\t');)
+      values.push_back(std::stod(cell));
+    return values;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  auto prm = [](const std::string &dir,
+                const int          iterations,
+                const bool         adapt,
+                const bool         resume) {
+    std::ostringstream s;
+    s << "set Dimension = 2\nset Output directory = " << dir << "\n"
+      << "subsection Scene\n  set Name = gmsh\n  set Mesh file = "
+      << DYNCONTACT_PRM_DIR << "/meshes/two_blocks.msh\n"
+      << "  set Body 1 tags = 1\n  set Body 2 tags = 2\n"
+      << "  set Dirichlet tags = 10\n  set Contact tags of body 1 = 11\n"
+      << "  set Contact tags of body 2 = 12\n"
+      << "  set Initial velocity of body 2 = 0, -0.5\n"
+      << "  set Contact search radius = 0.2\nend\n"
+      << "subsection Material\n  set Young's modulus = 1e4\n"
+      << "  set Poisson's ratio = 0.3\nend\n"
+      << "subsection Material of body 2\n  set Poisson's ratio = 0.3\nend\n"
+      << "subsection Time integration\n  set Scheme = N-CI\n"
+      << "  set Time step = 0.005\n  set End time = 0.6\n"
+      << "  set Time step adaptation = " << (adapt ? "true" : "false")
+      << "\nend\n"
+      << "subsection Contact solver\n  set Maximum active-set iterations = "
+      << iterations << "\nend\n"
+      << "subsection Checkpointing\n  set Resume = "
+      << (resume ? "true" : "false") << "\nend\n"
+      << "subsection Output\n  set Write vtu = false\nend\n";
+    return s.str();
+  };
+  std::ofstream("failing.prm") << prm("results-failing", 2, false, false);
+  std::ofstream("resumed.prm") << prm("results-failing", 50, false, true);
+  std::ofstream("full.prm") << prm("results-full", 50, false, false);
+  std::ofstream("adaptive.prm") << prm("results-adaptive", 2, true, false);
+
+  const Outcome failed = run_program("failing.prm");
+  const auto    at     = failed.text.find("dyncontact: error:");
+  log() << "a failing step stops the run: exit status non-zero: "
+        << check(failed.status != 0) << ", message:\n"
+        << (at == std::string::npos ? failed.text : failed.text.substr(at))
+        << "\n";
+  log() << "the last good state is a checkpoint: "
+        << check(std::filesystem::exists("results-failing/checkpoints/last"))
+        << "\n";
+
+  const Outcome resumed = run_program("resumed.prm");
+  run_program("full.prm");
+  const auto a = last_row("results-full/statistics.tsv");
+  const auto b = last_row("results-failing/statistics.tsv");
+  bool       same = resumed.status == 0 && a.size() == b.size() && a.size() > 6 &&
+              a[0] == b[0];
+  for (const unsigned int c : {1u, 2u, 3u, 5u, 6u, 7u})
+    same = same && std::abs(a[c] - b[c]) <= 1e-10 * std::abs(a[c]) + 1e-14;
+  log() << "resumed with 50 iterations, it completes and ends as the "
+        << "uninterrupted run: " << check(same) << "\n";
+
+  const Outcome adaptive = run_program("adaptive.prm");
+  const auto    times    = last_row("results-adaptive/statistics.tsv");
+  log() << "with time step adaptation the step is retried with tau/2: "
+        << check(adaptive.text.find("retrying with tau = 0.0025 s") !=
+                 std::string::npos)
+        << ", and the run gets past t = 0.185 s: "
+        << check(times.size() > 2 && times[1] > 0.25) << "\n";
+}
