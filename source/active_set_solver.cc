@@ -1,15 +1,14 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
 #include <dyncontact/active_set_solver.h>
 
 #include <algorithm>
-#include <set>
 #include <cmath>
+#include <set>
 
 namespace dyncontact
 {
@@ -332,11 +331,11 @@ namespace dyncontact
     if (pointwise)
       return solve_pointwise(r, v, active, multipliers);
 
-    Result                        result;
-    std::set<std::vector<char>>   visited;
-    AffineConstraints<double>     constraints, homogeneous;
-    VectorType                x(r), b(r), k(r), residual(r);
-    const double              r_norm = r.l2_norm();
+    Result                      result;
+    std::set<std::vector<char>> visited;
+    AffineConstraints<double>   constraints, homogeneous;
+    VectorType                  x(r), b(r), k(r), residual(r);
+    const double                r_norm = r.l2_norm();
 
     for (result.iterations = 1;; ++result.iterations)
       {
@@ -359,9 +358,9 @@ namespace dyncontact
             x(line.index) = 0.;
         x.compress(VectorOperation::insert);
 
-        const double  tolerance = std::max(parameters.linear_tolerance *
-                                            std::max(b.l2_norm(), r_norm),
-                                          1e-300);
+        const double tolerance =
+          std::max(parameters.linear_tolerance * std::max(b.l2_norm(), r_norm),
+                   1e-300);
         SolverControl control(parameters.max_linear_iterations, tolerance);
         SolverCG<VectorType> cg(control);
 
@@ -420,7 +419,7 @@ namespace dyncontact
         residual.sadd(-1., 1., r);
         {
           VectorType ghosted(locally_owned, ghost_set, comm);
-          ghosted = residual;
+          ghosted                    = residual;
           const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
           for (unsigned int p = 0; p < rows->size(); ++p)
             {
@@ -470,14 +469,14 @@ namespace dyncontact
         visited.insert(active);
         if (visited.count(new_active))
           {
-            result.cycled   = true;
+            result.cycled      = true;
             unsigned int worst = 0;
             double       size  = -1.;
             for (unsigned int p = 0; p < rows->size(); ++p)
               if (new_active[p] != active[p])
                 {
-                  const double c = std::abs(multipliers[p] / row_scaling[p] +
-                                            violation[p]);
+                  const double c =
+                    std::abs(multipliers[p] / row_scaling[p] + violation[p]);
                   if (c > size)
                     {
                       size  = c;

@@ -1,5 +1,4 @@
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
@@ -190,8 +189,9 @@ namespace dyncontact
   void
   BarImpact<dim>::create_coarse_mesh(Triangulation<dim, dim> &tria) const
   {
-    const unsigned int n_across = std::max<unsigned int>(
-      1, std::lround(cells_along_length * height / length));
+    const unsigned int n_across =
+      std::max<unsigned int>(1,
+                             std::lround(cells_along_length * height / length));
     std::vector<unsigned int> repetitions(dim, n_across);
     repetitions[0] = cells_along_length;
     Point<dim> upper;
@@ -248,7 +248,7 @@ namespace dyncontact
   template <int dim>
   Tensor<1, dim>
   BarImpact<dim>::initial_displacement(const Point<dim> &p,
-                                     const unsigned int) const
+                                       const unsigned int) const
   {
     Tensor<1, dim> e_x;
     e_x[0] = 1.;
@@ -259,8 +259,7 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  BarImpact<dim>::initial_velocity(const Point<dim> &,
-                                   const unsigned int) const
+  BarImpact<dim>::initial_velocity(const Point<dim> &, const unsigned int) const
   {
     Tensor<1, dim> e_x;
     e_x[0] = 1.;
@@ -290,8 +289,7 @@ namespace dyncontact
     // the 1D solution is exact for nu = 0 and an elastic bar
     return mat.poissons_ratio == 0. && !mat.is_viscous() &&
            initial_strain == 0. && impact_velocity > 0. && initial_gap >= 0. &&
-           !fixed_far_end &&
-           axial_body_force == 0. && end_traction == 0.;
+           !fixed_far_end && axial_body_force == 0. && end_traction == 0.;
   }
 
 
@@ -315,11 +313,10 @@ namespace dyncontact
                                                   mat.bar_wave_speed(),
                                                   impact_velocity,
                                                   initial_gap);
-    const double        u = bar.displacement, v = bar.velocity,
-                 dudx = bar.strain;
+    const double u = bar.displacement, v = bar.velocity, dudx = bar.strain;
 
     Tensor<1, dim> e_x;
-    e_x[0] = 1.;
+    e_x[0]                 = 1.;
     const Tensor<1, dim> e = rotate(e_x);
     ExactValues<dim>     values;
     values.displacement          = u * e;

@@ -8,7 +8,6 @@
 // leaves the previous checkpoint usable.
 
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/distributed/solution_transfer.h>
 
 #include <dyncontact/simulator.h>
@@ -92,10 +91,10 @@ namespace dyncontact
             << "\ncritical_measure_sum " << critical_measure_sum
             << "\nenergy_transfer " << energy_transfer
             << "\ntransfer_penetration " << transfer_penetration
-            << "\noutput_counter " << output_counter
-            << "\ndisplacement_active " << flags(displacement_active)
-            << "\nprojection_active " << flags(projection_active) << "\npvd "
-            << pvd_records.size() << "\n";
+            << "\noutput_counter " << output_counter << "\ndisplacement_active "
+            << flags(displacement_active) << "\nprojection_active "
+            << flags(projection_active) << "\npvd " << pvd_records.size()
+            << "\n";
         for (const auto &[t, file] : pvd_records)
           out << t << " " << file << "\n";
         out << "critical_parameters\n"
@@ -140,10 +139,11 @@ namespace dyncontact
     {
       std::ifstream last(checkpoint_root() + "/last");
       AssertThrow(last.good(),
-                  ExcMessage("Checkpointing/Resume: there is no checkpoint in '" +
-                             checkpoint_root() +
-                             "' (the file 'last' that marks the last good "
-                             "one is missing)."));
+                  ExcMessage(
+                    "Checkpointing/Resume: there is no checkpoint in '" +
+                    checkpoint_root() +
+                    "' (the file 'last' that marks the last good "
+                    "one is missing)."));
       std::getline(last, name);
     }
     const std::string dir = checkpoint_root() + "/" + name;
@@ -158,9 +158,8 @@ namespace dyncontact
     std::size_t n_pvd = 0;
     in >> key >> step >> key >> time >> key >> tau >> key >> next_output >>
       key >> viscous_dissipation >> key >> critical_measure_sum >> key >>
-      energy_transfer >> key >> transfer_penetration >> key >>
-      output_counter >> key >> displacement_active >> key >>
-      projection_active >> key >> n_pvd;
+      energy_transfer >> key >> transfer_penetration >> key >> output_counter >>
+      key >> displacement_active >> key >> projection_active >> key >> n_pvd;
     pvd_records.resize(n_pvd);
     for (auto &[t, file] : pvd_records)
       in >> t >> file;
@@ -190,7 +189,8 @@ namespace dyncontact
 
     std::size_t n_rows = 0;
     in >> key >> n_rows;
-    statistics.rows.assign(n_rows, std::vector<double>(statistics.columns.size()));
+    statistics.rows.assign(n_rows,
+                           std::vector<double>(statistics.columns.size()));
     for (auto &row : statistics.rows)
       for (double &value : row)
         in >> value;
@@ -220,16 +220,22 @@ namespace dyncontact
           statistics.write_row(statistics_file, row);
         statistics_file.flush();
       }
-    pcout << "   resumed from " << dir << " at step " << step << ", t = " << time
-          << " s" << std::endl;
+    pcout << "   resumed from " << dir << " at step " << step
+          << ", t = " << time << " s" << std::endl;
   }
 
-  template std::string Simulator<2>::checkpoint_root() const;
-  template std::string Simulator<3>::checkpoint_root() const;
   template std::string
-  Simulator<2>::write_checkpoint(const unsigned int, const double, const double);
+  Simulator<2>::checkpoint_root() const;
   template std::string
-  Simulator<3>::write_checkpoint(const unsigned int, const double, const double);
+  Simulator<3>::checkpoint_root() const;
+  template std::string
+  Simulator<2>::write_checkpoint(const unsigned int,
+                                 const double,
+                                 const double);
+  template std::string
+  Simulator<3>::write_checkpoint(const unsigned int,
+                                 const double,
+                                 const double);
   template void
   Simulator<2>::resume_from_checkpoint(unsigned int &, double &, double &);
   template void

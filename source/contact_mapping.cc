@@ -1,7 +1,5 @@
 #include <deal.II/base/exceptions.h>
-
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/numerics/rtree.h>
 
 #include <dyncontact/contact_mapping.h>
@@ -22,10 +20,9 @@ namespace dyncontact
       if constexpr (dim == 2)
         return Point<dim>(v[0] * (1. - xi[0]) + v[1] * xi[0]);
       else
-        return Point<dim>(v[0] * ((1. - xi[0]) * (1. - xi[1])) +
-                          v[1] * (xi[0] * (1. - xi[1])) +
-                          v[2] * ((1. - xi[0]) * xi[1]) +
-                          v[3] * (xi[0] * xi[1]));
+        return Point<dim>(
+          v[0] * ((1. - xi[0]) * (1. - xi[1])) + v[1] * (xi[0] * (1. - xi[1])) +
+          v[2] * ((1. - xi[0]) * xi[1]) + v[3] * (xi[0] * xi[1]));
     }
 
     /// Tangent vectors d x / d xi_k.
@@ -107,13 +104,14 @@ namespace dyncontact
         xi = Point<dim - 1>(0.5, 0.5);
         for (unsigned int it = 0; it < 50; ++it)
           {
-            const auto           t = face_tangents(v, xi);
-            const Tensor<1, dim> r = face_point(v, xi) - x;
-            const double a11 = t[0] * t[0], a12 = t[0] * t[1], a22 = t[1] * t[1];
-            const double b1 = -(t[0] * r), b2 = -(t[1] * r);
-            const double det = a11 * a22 - a12 * a12;
-            double       d1  = (a22 * b1 - a12 * b2) / det;
-            double       d2  = (a11 * b2 - a12 * b1) / det;
+            const auto           t   = face_tangents(v, xi);
+            const Tensor<1, dim> r   = face_point(v, xi) - x;
+            const double         a11 = t[0] * t[0], a12 = t[0] * t[1],
+                         a22  = t[1] * t[1];
+            const double   b1 = -(t[0] * r), b2 = -(t[1] * r);
+            const double   det = a11 * a22 - a12 * a12;
+            double         d1  = (a22 * b1 - a12 * b2) / det;
+            double         d2  = (a11 * b2 - a12 * b1) / det;
             Point<dim - 1> next(std::clamp(xi[0] + d1, 0., 1.),
                                 std::clamp(xi[1] + d2, 0., 1.));
             // on a clamped side, minimise along the remaining direction
@@ -166,12 +164,16 @@ namespace dyncontact
     // sides of the unit face as vertex pairs: 2D vertex 0, 1; 3D xi=0
     // (v0,v2), xi=1 (v1,v3), eta=0 (v0,v1), eta=1 (v2,v3)
     const std::vector<std::array<unsigned int, 2>> sides =
-      (dim == 2) ? std::vector<std::array<unsigned int, 2>>{{{0, 0}}, {{1, 1}}} :
-                   std::vector<std::array<unsigned int, 2>>{
-                     {{0, 2}}, {{1, 3}}, {{0, 1}}, {{2, 3}}};
+      (dim == 2) ?
+        std::vector<std::array<unsigned int, 2>>{{{0, 0}}, {{1, 1}}} :
+        std::vector<std::array<unsigned int, 2>>{{{0, 2}},
+                                                 {{1, 3}},
+                                                 {{0, 1}},
+                                                 {{2, 3}}};
     std::map<std::pair<Key, Key>, unsigned int> count;
     auto side_key = [&](const MasterFace<dim> &face, const unsigned int s) {
-      Key a = key(face.vertices[sides[s][0]]), b = key(face.vertices[sides[s][1]]);
+      Key a = key(face.vertices[sides[s][0]]),
+          b = key(face.vertices[sides[s][1]]);
       return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
     };
     for (const auto &face : faces)
@@ -216,11 +218,11 @@ namespace dyncontact
     bool                      best_on_rim = false;
     for (const auto &candidate : candidates)
       {
-        const unsigned int  f = candidate.second;
-        std::array<bool, 4> clamped;
+        const unsigned int   f = candidate.second;
+        std::array<bool, 4>  clamped;
         const Point<dim - 1> xi =
           closest_point_on_face(master_faces[f].vertices, x, clamped);
-        const Point<dim> p = face_point(master_faces[f].vertices, xi);
+        const Point<dim> p        = face_point(master_faces[f].vertices, xi);
         const double     distance = x.distance(p);
         if (distance > radius)
           continue;
@@ -241,9 +243,8 @@ namespace dyncontact
     if (!best)
       return best;
 
-    const double size =
-      master_faces[best->face].vertices[0].distance(
-        master_faces[best->face].vertices.back());
+    const double size = master_faces[best->face].vertices[0].distance(
+      master_faces[best->face].vertices.back());
     const bool touching = best->gap <= 1e-10 * size;
     // the image lies outside the master surface (on its rim, at a distance,
     // and not along the surface normal)
@@ -280,7 +281,7 @@ namespace dyncontact
         row.position[d] = x[d];
       }
     // master entries: -N_j(phi(x)) nu_c for every DoF node j stands for
-    const FE_Q<dim - 1>                 face_fe(degree);
+    const FE_Q<dim - 1>                face_fe(degree);
     std::map<global_dof_index, double> master;
     for (unsigned int j = 0; j < face.node_dofs.size(); ++j)
       {

@@ -1,6 +1,5 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
@@ -37,18 +36,17 @@ namespace dyncontact
     {
       const auto items = Utilities::split_string_list(text, ',');
       AssertThrow(items.size() == dim || (dim == 2 && items.size() == 3),
-                  ExcMessage("Scene/" + entry + " must have " +
-                             std::to_string(dim) +
-                             " comma-separated components; got '" + text +
-                             "'."));
+                  ExcMessage(
+                    "Scene/" + entry + " must have " + std::to_string(dim) +
+                    " comma-separated components; got '" + text + "'."));
       Tensor<1, dim> v;
       for (unsigned int d = 0; d < dim; ++d)
         {
           v[d] = Utilities::string_to_double(items[d]);
           AssertThrow(std::isfinite(v[d]),
                       ExcMessage("Scene/" + entry +
-                                 " must have finite components; got '" +
-                                 text + "'."));
+                                 " must have finite components; got '" + text +
+                                 "'."));
         }
       return v;
     }
@@ -136,19 +134,22 @@ namespace dyncontact
     : materials(materials)
   {
     prm.enter_subsection("Scene");
-    mesh_file = prm.get("Mesh file");
-    body_tags[0] = parse_tags(prm.get("Body 1 tags"), "Body 1 tags");
-    body_tags[1] = parse_tags(prm.get("Body 2 tags"), "Body 2 tags");
+    mesh_file      = prm.get("Mesh file");
+    body_tags[0]   = parse_tags(prm.get("Body 1 tags"), "Body 1 tags");
+    body_tags[1]   = parse_tags(prm.get("Body 2 tags"), "Body 2 tags");
     dirichlet_tags = parse_tags(prm.get("Dirichlet tags"), "Dirichlet tags");
     neumann_tags   = parse_tags(prm.get("Neumann tags"), "Neumann tags");
-    traction = parse_vector<dim>(prm.get("Neumann traction"), "Neumann traction");
+    traction =
+      parse_vector<dim>(prm.get("Neumann traction"), "Neumann traction");
     for (unsigned int b = 0; b < 2; ++b)
       {
-        const std::string entry = "Contact tags of body " + std::to_string(b + 1);
+        const std::string entry =
+          "Contact tags of body " + std::to_string(b + 1);
         for (const auto tag : parse_tags(prm.get(entry), entry))
           contact_tags[b].push_back(tag);
-        const std::string v = "Initial velocity of body " + std::to_string(b + 1);
-        velocity[b]         = parse_vector<dim>(prm.get(v), v);
+        const std::string v =
+          "Initial velocity of body " + std::to_string(b + 1);
+        velocity[b] = parse_vector<dim>(prm.get(v), v);
       }
     gravity                 = parse_vector<dim>(prm.get("Gravity"), "Gravity");
     const std::string slave = prm.get("Slave side");
@@ -191,7 +192,7 @@ namespace dyncontact
     grid_in.read_msh(in);
 
     // cells: physical tag -> body
-    std::set<unsigned int> cell_tags;
+    std::set<unsigned int>               cell_tags;
     std::map<unsigned int, unsigned int> vertex_body;
     for (const auto &cell : tria.active_cell_iterators())
       {
@@ -202,13 +203,12 @@ namespace dyncontact
           if (body_tags[b].count(tag))
             body = b;
         AssertThrow(body >= 0,
-                    ExcMessage("Mesh file '" + mesh_file +
-                               "': cells with physical tag " +
-                               std::to_string(tag) +
-                               " belong to no body (Scene/Body 1 tags = " +
-                               to_list(body_tags[0]) +
-                               ", Scene/Body 2 tags = " + to_list(body_tags[1]) +
-                               ")."));
+                    ExcMessage(
+                      "Mesh file '" + mesh_file +
+                      "': cells with physical tag " + std::to_string(tag) +
+                      " belong to no body (Scene/Body 1 tags = " +
+                      to_list(body_tags[0]) +
+                      ", Scene/Body 2 tags = " + to_list(body_tags[1]) + ")."));
         cell->set_material_id(body);
         for (const auto v : cell->vertex_indices())
           {
@@ -305,8 +305,8 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  GmshScene<dim>::initial_velocity(const Point<dim> &x,
-                                 const unsigned int body) const
+  GmshScene<dim>::initial_velocity(const Point<dim>  &x,
+                                   const unsigned int body) const
   {
     (void)x;
     return velocity[body];

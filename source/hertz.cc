@@ -1,5 +1,4 @@
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
@@ -73,13 +72,13 @@ namespace dyncontact
     , materials(materials)
   {
     prm.enter_subsection("Scene");
-    radius              = prm.get_double("Radius");
-    block_width         = prm.get_double("Block width");
-    block_depth         = prm.get_double("Block depth");
-    load                = prm.get_double("Load");
-    drop_velocity       = prm.get_double("Drop velocity");
-    initial_gap         = prm.get_double("Initial gap");
-    contact_refinements = prm.get_integer("Contact zone refinements");
+    radius                  = prm.get_double("Radius");
+    block_width             = prm.get_double("Block width");
+    block_depth             = prm.get_double("Block depth");
+    load                    = prm.get_double("Load");
+    drop_velocity           = prm.get_double("Drop velocity");
+    initial_gap             = prm.get_double("Initial gap");
+    contact_refinements     = prm.get_integer("Contact zone refinements");
     const std::string slave = prm.get("Slave side");
     search_radius           = prm.get_double("Contact search radius");
     prm.leave_subsection();
@@ -113,8 +112,7 @@ namespace dyncontact
   {
     double inverse = 0.;
     for (const Material &m : materials)
-      inverse +=
-        (1. - m.poissons_ratio * m.poissons_ratio) / m.youngs_modulus;
+      inverse += (1. - m.poissons_ratio * m.poissons_ratio) / m.youngs_modulus;
     return 1. / inverse;
   }
 
@@ -153,7 +151,7 @@ namespace dyncontact
     // the cylinder/ball: a quarter disc (1/8 ball) in x, y >= 0 turned by
     // -90 degrees about z into x >= 0, y <= 0, then lifted so that its
     // lowest point is at (0, g0)
-    const double           centre_height = radius + initial_gap;
+    const double            centre_height = radius + initial_gap;
     Triangulation<dim, dim> body;
     GridGenerator::quarter_hyper_ball(body, Point<dim>(), radius);
     GridTools::transform(
@@ -172,9 +170,10 @@ namespace dyncontact
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double extent = (d == 1) ? block_depth : block_width;
-        repetitions[d] = std::max<unsigned int>(1, std::lround(2. * extent / radius));
-        lower[d]       = (d == 1) ? -block_depth : 0.;
-        upper[d]       = (d == 1) ? 0. : block_width;
+        repetitions[d] =
+          std::max<unsigned int>(1, std::lround(2. * extent / radius));
+        lower[d] = (d == 1) ? -block_depth : 0.;
+        upper[d] = (d == 1) ? 0. : block_width;
       }
     GridGenerator::subdivided_hyper_rectangle(block, repetitions, lower, upper);
 
@@ -185,7 +184,7 @@ namespace dyncontact
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           {
-            const Point<dim> c = cell->face(f)->center();
+            const Point<dim>   c = cell->face(f)->center();
             types::boundary_id id;
             if (std::abs(c[0]) < tolerance)
               id = symmetry_x_id;
@@ -273,8 +272,8 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  Hertz<dim>::initial_velocity(const Point<dim> &x,
-                                 const unsigned int body) const
+  Hertz<dim>::initial_velocity(const Point<dim>  &x,
+                               const unsigned int body) const
   {
     Tensor<1, dim> v;
     (void)x;

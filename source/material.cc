@@ -23,8 +23,8 @@ namespace dyncontact
   }
 
   void
-  Material::declare_parameters(ParameterHandler &prm,
-                                const std::string &subsection)
+  Material::declare_parameters(ParameterHandler  &prm,
+                               const std::string &subsection)
   {
     prm.enter_subsection(subsection);
     prm.declare_entry("Young's modulus",
@@ -68,7 +68,8 @@ namespace dyncontact
   } // namespace
 
   void
-  Material::parse_parameters(ParameterHandler &prm, const std::string &subsection)
+  Material::parse_parameters(ParameterHandler  &prm,
+                             const std::string &subsection)
   {
     prm.enter_subsection(subsection);
     youngs_modulus        = prm.get_double("Young's modulus");
@@ -85,21 +86,25 @@ namespace dyncontact
                            number(youngs_modulus) + "."));
     AssertThrow(std::isfinite(poissons_ratio) && poissons_ratio > -1. &&
                   poissons_ratio < 0.5,
-                ExcMessage(subsection + "/Poisson's ratio must lie in the open "
+                ExcMessage(subsection +
+                           "/Poisson's ratio must lie in the open "
                            "interval (-1, 0.5); got " +
                            number(poissons_ratio) + "."));
     AssertThrow(std::isfinite(density) && density > 0.,
-                ExcMessage(subsection + "/Density must be a finite number > 0 "
+                ExcMessage(subsection +
+                           "/Density must be a finite number > 0 "
                            "(kg/m^3); got " +
                            number(density) + "."));
     AssertThrow(std::isfinite(viscous_shear_modulus) &&
                   viscous_shear_modulus >= 0.,
-                ExcMessage(subsection + "/Viscous shear modulus must be a finite "
+                ExcMessage(subsection +
+                           "/Viscous shear modulus must be a finite "
                            "number >= 0 (Pa s); got " +
                            number(viscous_shear_modulus) + "."));
     AssertThrow(std::isfinite(viscous_lambda) &&
                   viscous_lambda + 2. * viscous_shear_modulus / 3. >= 0.,
-                ExcMessage(subsection + "/Viscous Lame parameter must be finite "
+                ExcMessage(subsection +
+                           "/Viscous Lame parameter must be finite "
                            "with lambda_v + 2/3 mu_v >= 0 (Pa s); got " +
                            number(viscous_lambda) + "."));
   }

@@ -5,10 +5,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/distributed/solution_transfer.h>
-
 #include <deal.II/numerics/error_estimator.h>
 
 #include <dyncontact/mesh_refinement.h>
@@ -74,14 +72,14 @@ namespace dyncontact
   MeshRefinementParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh refinement");
-    interval                = prm.get_integer("Refinement interval");
-    min_level               = prm.get_integer("Minimum level");
-    max_level               = prm.get_integer("Maximum level");
-    refine_fraction         = prm.get_double("Refine fraction");
-    coarsen_fraction        = prm.get_double("Coarsen fraction");
-    const std::string crit  = prm.get("Criteria");
-    contact_distance        = prm.get_double("Contact zone distance");
-    initial_refinements     = prm.get_integer("Initial contact refinements");
+    interval               = prm.get_integer("Refinement interval");
+    min_level              = prm.get_integer("Minimum level");
+    max_level              = prm.get_integer("Maximum level");
+    refine_fraction        = prm.get_double("Refine fraction");
+    coarsen_fraction       = prm.get_double("Coarsen fraction");
+    const std::string crit = prm.get("Criteria");
+    contact_distance       = prm.get_double("Contact zone distance");
+    initial_refinements    = prm.get_integer("Initial contact refinements");
     prm.leave_subsection();
     kelly_displacement = crit.find("kelly displacement") != std::string::npos;
     kelly_velocity     = crit.find("kelly velocity") != std::string::npos;
@@ -127,7 +125,8 @@ namespace dyncontact
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
-          for (unsigned int node = 0; node < scalar_fe.n_dofs_per_cell(); ++node)
+          for (unsigned int node = 0; node < scalar_fe.n_dofs_per_cell();
+               ++node)
             if (zone.count(dofs[fe.component_to_system_index(0, node)]))
               {
                 cell->clear_coarsen_flag();
@@ -162,7 +161,7 @@ namespace dyncontact
   void
   Simulator<dim>::adapt_mesh()
   {
-    const MeshRefinementParameters &refinement = parameters.refinement;
+    const MeshRefinementParameters &refinement    = parameters.refinement;
     const double                    energy_before = total_energy();
 
     VectorType u_ghosted(locally_owned, locally_relevant, comm);
@@ -235,7 +234,7 @@ namespace dyncontact
     // curved surface, coarsened nodes): M-project it back and record by how
     // much it was violated
     TimerOutput::Scope t(*timer, "mesh adaptation");
-    const auto         violation = row_evaluator->constraint_values(u);
+    const auto         violation     = row_evaluator->constraint_values(u);
     double             max_violation = 0.;
     for (const double v : violation)
       max_violation = std::max(max_violation, v);
@@ -258,10 +257,16 @@ namespace dyncontact
 
 
 
-  template void Simulator<2>::mark_contact_zone(const VectorType &);
-  template void Simulator<3>::mark_contact_zone(const VectorType &);
-  template void Simulator<2>::initial_refinement();
-  template void Simulator<3>::initial_refinement();
-  template void Simulator<2>::adapt_mesh();
-  template void Simulator<3>::adapt_mesh();
+  template void
+  Simulator<2>::mark_contact_zone(const VectorType &);
+  template void
+  Simulator<3>::mark_contact_zone(const VectorType &);
+  template void
+  Simulator<2>::initial_refinement();
+  template void
+  Simulator<3>::initial_refinement();
+  template void
+  Simulator<2>::adapt_mesh();
+  template void
+  Simulator<3>::adapt_mesh();
 } // namespace dyncontact

@@ -20,10 +20,11 @@ namespace dyncontact
                       Patterns::Anything(),
                       "Folder for the VTU/PVTU/PVD files and statistics.tsv; "
                       "created if missing, relative to the working directory.");
-    prm.declare_entry("Polynomial degree",
-                      "1",
-                      Patterns::Integer(1, 4),
-                      "Degree p of the displacement space FE_Q(p)^dim, 1 to 4.");
+    prm.declare_entry(
+      "Polynomial degree",
+      "1",
+      Patterns::Integer(1, 4),
+      "Degree p of the displacement space FE_Q(p)^dim, 1 to 4.");
 
     prm.enter_subsection("Time integration");
     prm.declare_entry("Scheme",
@@ -156,10 +157,10 @@ namespace dyncontact
                 ExcMessage("Output directory must not be empty."));
 
     prm.enter_subsection("Time integration");
-    scheme      = scheme_from_string(prm.get("Scheme"));
-    time_step   = prm.get_double("Time step");
-    end_time    = prm.get_double("End time");
-    lumped_mass = (prm.get("Mass matrix") == "lumped");
+    scheme               = scheme_from_string(prm.get("Scheme"));
+    time_step            = prm.get_double("Time step");
+    end_time             = prm.get_double("End time");
+    lumped_mass          = (prm.get("Mass matrix") == "lumped");
     time_step_adaptation = prm.get_bool("Time step adaptation");
     prm.leave_subsection();
     AssertThrow(std::isfinite(time_step) && time_step > 0.,

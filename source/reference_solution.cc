@@ -48,14 +48,14 @@ namespace dyncontact
         if (rank == 0)
           std::filesystem::create_directories(parameters.reference_directory);
         MPI_Barrier(comm);
-        std::ofstream out(file, std::ios::binary);
+        std::ofstream       out(file, std::ios::binary);
         const unsigned long n     = locally_owned.n_elements();
         const unsigned long total = dof_handler.n_dofs();
         out.write(reinterpret_cast<const char *>(&total), sizeof(total));
         out.write(reinterpret_cast<const char *>(&n), sizeof(n));
         for (const auto i : locally_owned)
           {
-            const unsigned long index_ = i;
+            const unsigned long index_    = i;
             const double        values[2] = {u(i), udot(i)};
             out.write(reinterpret_cast<const char *>(&index_), sizeof(index_));
             out.write(reinterpret_cast<const char *>(values), sizeof(values));
@@ -68,10 +68,10 @@ namespace dyncontact
 
     std::ifstream in(file, std::ios::binary);
     AssertThrow(in.good(),
-                ExcMessage("Reference solution: there is no reference state '" +
-                           file +
-                           "' (a reference run on the same mesh and number of "
-                           "MPI ranks, with the same Interval, must write it)."));
+                ExcMessage(
+                  "Reference solution: there is no reference state '" + file +
+                  "' (a reference run on the same mesh and number of "
+                  "MPI ranks, with the same Interval, must write it)."));
     unsigned long total = 0, n = 0;
     in.read(reinterpret_cast<char *>(&total), sizeof(total));
     in.read(reinterpret_cast<char *>(&n), sizeof(n));
@@ -104,6 +104,8 @@ namespace dyncontact
     return std::sqrt(std::max(error2, 0.));
   }
 
-  template double Simulator<2>::process_reference_state(const double);
-  template double Simulator<3>::process_reference_state(const double);
+  template double
+  Simulator<2>::process_reference_state(const double);
+  template double
+  Simulator<3>::process_reference_state(const double);
 } // namespace dyncontact

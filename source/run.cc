@@ -64,7 +64,8 @@ namespace dyncontact
     message_of(const std::exception &e)
     {
       std::ostringstream s;
-      if (const auto *dealii_exception = dynamic_cast<const ExceptionBase *>(&e))
+      if (const auto *dealii_exception =
+            dynamic_cast<const ExceptionBase *>(&e))
         dealii_exception->print_info(s);
       else
         s << e.what();

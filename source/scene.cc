@@ -1,5 +1,4 @@
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
@@ -93,7 +92,7 @@ namespace dyncontact
   template <int dim>
   void
   merge_bodies(const std::vector<const Triangulation<dim, dim> *> &bodies,
-               Triangulation<dim, dim>                          &result)
+               Triangulation<dim, dim>                            &result)
   {
     std::vector<Point<dim>>    vertices;
     std::vector<CellData<dim>> cells;

@@ -1,16 +1,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
-
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -121,13 +116,13 @@ namespace dyncontact
         std::vector<bool> components(dim);
         for (unsigned int d = 0; d < dim; ++d)
           components[d] = boundary.components[d];
-        VectorTools::interpolate_boundary_values(
-          mapping,
-          dof_handler,
-          boundary.id,
-          Functions::ZeroFunction<dim>(dim),
-          mesh_constraints,
-          ComponentMask(components));
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
+                                                 boundary.id,
+                                                 Functions::ZeroFunction<dim>(
+                                                   dim),
+                                                 mesh_constraints,
+                                                 ComponentMask(components));
       }
     mesh_constraints.close();
     DoFTools::extract_constant_modes(dof_handler,
@@ -182,8 +177,9 @@ namespace dyncontact
     }
 
     // locally owned DoFs of each body and component (for the momentum)
-    body_component_dofs.assign(scene->n_bodies(),
-                               std::vector<IndexSet>(dim, IndexSet(dof_handler.n_dofs())));
+    body_component_dofs.assign(
+      scene->n_bodies(),
+      std::vector<IndexSet>(dim, IndexSet(dof_handler.n_dofs())));
     {
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -223,17 +219,18 @@ namespace dyncontact
     // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes the
     // element mass matrix of FE_Q diagonal
     const Quadrature<dim> mass_quadrature =
-      parameters.lumped_mass ? Quadrature<dim>(QGaussLobatto<dim>(fe.degree + 1)) :
-                               Quadrature<dim>(QGauss<dim>(fe.degree + 1));
+      parameters.lumped_mass ?
+        Quadrature<dim>(QGaussLobatto<dim>(fe.degree + 1)) :
+        Quadrature<dim>(QGauss<dim>(fe.degree + 1));
     const QGauss<dim - 1>        face_quadrature(fe.degree + 1);
     const QGaussLobatto<dim - 1> lumped_face_quadrature(fe.degree + 1);
 
-    FEValues<dim> fe_values(mapping,
+    FEValues<dim>     fe_values(mapping,
                             fe,
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values);
-    FEValues<dim> mass_values(mapping,
+    FEValues<dim>     mass_values(mapping,
                               fe,
                               mass_quadrature,
                               update_values | update_JxW_values);
@@ -249,24 +246,24 @@ namespace dyncontact
     const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
     std::vector<double> bad_cell; // centre and body of an inverted cell
     FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double> cell_stiffness(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double> cell_viscous(dofs_per_cell, dofs_per_cell);
-    Vector<double>     cell_load(dofs_per_cell);
-    Vector<double>     cell_boundary_mass(dofs_per_cell);
+    FullMatrix<double>  cell_stiffness(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double>  cell_viscous(dofs_per_cell, dofs_per_cell);
+    Vector<double>      cell_load(dofs_per_cell);
+    Vector<double>      cell_boundary_mass(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
 
-    const FEValuesExtractors::Vector displacement(0);
+    const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
     std::vector<double>                  div(dofs_per_cell);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_mass          = 0.;
-          cell_stiffness     = 0.;
-          cell_viscous       = 0.;
-          cell_load          = 0.;
-          cell_boundary_mass = 0.;
+          cell_mass                  = 0.;
+          cell_stiffness             = 0.;
+          cell_viscous               = 0.;
+          cell_load                  = 0.;
+          cell_boundary_mass         = 0.;
           const Material &material   = scene->material(cell->material_id());
           const double    mu         = material.mu();
           const double    lambda     = material.lambda();
@@ -298,7 +295,8 @@ namespace dyncontact
                     {
                       const double ee = eps[i] * eps[j];
                       const double dd = div[i] * div[j];
-                      cell_stiffness(i, j) += (2. * mu * ee + lambda * dd) * JxW;
+                      cell_stiffness(i, j) +=
+                        (2. * mu * ee + lambda * dd) * JxW;
                       if (material.is_viscous())
                         cell_viscous(i, j) +=
                           (2. * material.viscous_shear_modulus * ee +
@@ -536,7 +534,8 @@ namespace dyncontact
                       centre += v / double(face.vertices.size());
                     if (other.find_image(centre))
                       {
-                        size[s] += face.vertices[0].distance(face.vertices.back());
+                        size[s] +=
+                          face.vertices[0].distance(face.vertices.back());
                         ++n;
                       }
                   }
@@ -552,19 +551,18 @@ namespace dyncontact
             if (!image)
               return;
             auto       projection = *image;
-            const bool inside = (x - image->point) * image->master_normal <
+            const bool inside     = (x - image->point) * image->master_normal <
                                 -1e-10 * pair.search_radius;
-            AssertThrow(parameters.solver.project_initial_penetration ||
-                          !inside,
-                        ExcMessage(
-                          "The initial configuration penetrates: the slave "
-                          "node at (" +
-                          Utilities::to_string(x[0]) + ", " +
-                          Utilities::to_string(x[1]) +
-                          ", ...) lies inside the master body by " +
-                          Utilities::to_string(image->gap) +
-                          " m. Correct the mesh, or set 'Contact "
-                          "solver/Initial penetration = project'."));
+            AssertThrow(
+              parameters.solver.project_initial_penetration || !inside,
+              ExcMessage("The initial configuration penetrates: the slave "
+                         "node at (" +
+                         Utilities::to_string(x[0]) + ", " +
+                         Utilities::to_string(x[1]) +
+                         ", ...) lies inside the master body by " +
+                         Utilities::to_string(image->gap) +
+                         " m. Correct the mesh, or set 'Contact "
+                         "solver/Initial penetration = project'."));
             if (inside)
               {
                 // a negative gap along the master's normal: the row asks
@@ -578,9 +576,8 @@ namespace dyncontact
               local_rows.emplace_back(row, scalar_dof);
           });
         pcout << "   contact pair: slave is side " << slave + 1 << " ("
-              << sides[slave].size() << " faces), master side "
-              << 2 - slave << " (" << sides[1 - slave].size() << " faces)"
-              << std::endl;
+              << sides[slave].size() << " faces), master side " << 2 - slave
+              << " (" << sides[1 - slave].size() << " faces)" << std::endl;
       }
 
     // every rank gets all rows, in rank order
@@ -593,7 +590,10 @@ namespace dyncontact
         }
 
     row_evaluator = std::make_unique<ActiveSetSolver>(parameters.solver, comm);
-    row_evaluator->reinit(locally_owned, locally_relevant, mesh_constraints, rows);
+    row_evaluator->reinit(locally_owned,
+                          locally_relevant,
+                          mesh_constraints,
+                          rows);
 
     double measure = 0.;
     for (const auto &row : rows.rows)
@@ -609,7 +609,7 @@ namespace dyncontact
   std::vector<MasterFace<dim>>
   Simulator<dim>::gather_faces(const std::vector<types::boundary_id> &ids) const
   {
-    std::vector<MasterFace<dim>> local;
+    std::vector<MasterFace<dim>>         local;
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -622,7 +622,7 @@ namespace dyncontact
               MasterFace<dim> master;
               for (const unsigned int v : face->vertex_indices())
                 master.vertices.push_back(face->vertex(v));
-              master.cell_center = cell->center();
+              master.cell_center         = cell->center();
               const unsigned int n_nodes = fe.n_dofs_per_face() / dim;
               master.node_dofs.resize(n_nodes);
               master.node_dof0.assign(n_nodes, numbers::invalid_dof_index);
@@ -739,18 +739,18 @@ namespace dyncontact
   Simulator<dim>::compute_energy_error(const double time) const
   {
     // ||(e, edot)||_E^2 = 1/2 ||edot||^2_{L2(rho)} + 1/2 a(e, e) (eq. 22-24)
-    const Material   &material = scene->material(0);
+    const Material &material = scene->material(0);
     // the exact solution has kinks and jumps inside cells: an iterated
     // Gauss rule (no point at cell or sub-cell midpoints) integrates them
     // robustly
     const QIterated<dim> quadrature(QGauss<1>(fe.degree + 1), 2);
-    FEValues<dim>     fe_values(mapping,
+    FEValues<dim>        fe_values(mapping,
                             fe,
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-    VectorType u_ghosted(locally_owned, locally_relevant, comm);
-    VectorType v_ghosted(locally_owned, locally_relevant, comm);
+    VectorType           u_ghosted(locally_owned, locally_relevant, comm);
+    VectorType           v_ghosted(locally_owned, locally_relevant, comm);
     u_ghosted = u;
     v_ghosted = udot;
 
@@ -768,7 +768,7 @@ namespace dyncontact
             {
               const ExactValues<dim> exact =
                 scene->exact_solution(fe_values.quadrature_point(q), time);
-              const Tensor<1, dim> edot = exact.velocity - vh[q];
+              const Tensor<1, dim>          edot = exact.velocity - vh[q];
               const SymmetricTensor<2, dim> eps =
                 symmetrize(exact.displacement_gradient - grad_uh[q]);
               local += (0.5 * material.density * (edot * edot) +
@@ -851,32 +851,32 @@ namespace dyncontact
           }
       }
 
-    std::vector<double> row = {
-      double(step),
-      time,
-      kinetic,
-      elastic,
-      viscous_dissipation,
-      kinetic + elastic,
-      momentum[0],
-      momentum[1],
-      momentum[2],
-      n_active,
-      active_measure,
-      critical_measure,
-      critical_measure_sum,
-      force,
-      max_pressure,
-      max_penetration,
-      max_normal_velocity,
-      report.velocity_correction,
-      double(report.displacement_solve.iterations),
-      double(report.projection_solve.iterations),
-      double(report.displacement_solve.linear_iterations +
-             report.projection_solve.linear_iterations),
-      double(triangulation.n_global_active_cells()),
-      double(dof_handler.n_dofs()),
-      wall_time};
+    std::vector<double> row = {double(step),
+                               time,
+                               kinetic,
+                               elastic,
+                               viscous_dissipation,
+                               kinetic + elastic,
+                               momentum[0],
+                               momentum[1],
+                               momentum[2],
+                               n_active,
+                               active_measure,
+                               critical_measure,
+                               critical_measure_sum,
+                               force,
+                               max_pressure,
+                               max_penetration,
+                               max_normal_velocity,
+                               report.velocity_correction,
+                               double(report.displacement_solve.iterations),
+                               double(report.projection_solve.iterations),
+                               double(
+                                 report.displacement_solve.linear_iterations +
+                                 report.projection_solve.linear_iterations),
+                               double(triangulation.n_global_active_cells()),
+                               double(dof_handler.n_dofs()),
+                               wall_time};
     if (scene->n_bodies() == 2)
       for (unsigned int d = 0; d < 3; ++d)
         row.push_back(body_momentum[3 + d]);
@@ -960,7 +960,8 @@ namespace dyncontact
     DataOut<dim> data_out;
     data_out.attach_triangulation(triangulation);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+      vector_field(dim,
+                   DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(dof_handler,
                              u_ghosted,
                              std::vector<std::string>(dim, "displacement"),
@@ -971,7 +972,9 @@ namespace dyncontact
                              vector_field);
     const VonMisesPostprocessor<dim> von_mises(*scene);
     data_out.add_data_vector(dof_handler, u_ghosted, von_mises);
-    data_out.add_data_vector(scalar_dof_handler, pressure_g, "contact_pressure");
+    data_out.add_data_vector(scalar_dof_handler,
+                             pressure_g,
+                             "contact_pressure");
     data_out.add_data_vector(scalar_dof_handler, active_g, "active_set");
     data_out.add_data_vector(scalar_dof_handler, critical_g, "critical_set");
     if (!scene->contact_pairs().empty())
@@ -1102,9 +1105,10 @@ namespace dyncontact
         statistics.columns.push_back(column);
     AssertThrow(!(parameters.refinement.interval > 0 &&
                   (parameters.write_reference || parameters.compare_reference)),
-                ExcMessage("Reference solutions need the same mesh in both "
-                           "runs: they cannot be combined with adaptive "
-                           "meshes (Mesh refinement/Refinement interval > 0)."));
+                ExcMessage(
+                  "Reference solutions need the same mesh in both "
+                  "runs: they cannot be combined with adaptive "
+                  "meshes (Mesh refinement/Refinement interval > 0)."));
     if (parameters.compare_reference)
       statistics.columns.push_back("error_reference");
     if (parameters.refinement.adaptive())
@@ -1158,7 +1162,7 @@ namespace dyncontact
     const bool is_static = parameters.scheme == Scheme::quasi_static;
     auto       more      = [&]() {
       return is_static ? step < 1 :
-                         time < parameters.end_time - 1e-9 * current_tau;
+                                    time < parameters.end_time - 1e-9 * current_tau;
     };
     // t = t_base + n tau, so that times do not accumulate round-off
     double       time_base   = time;
@@ -1197,9 +1201,8 @@ namespace dyncontact
                 continue;
               }
             const std::string dir = write_checkpoint(step, time, next_output);
-            const double      residual =
-              std::max(report.displacement_solve.residual,
-                       report.projection_solve.residual);
+            const double residual = std::max(report.displacement_solve.residual,
+                                             report.projection_solve.residual);
             std::ostringstream message;
             message << std::setprecision(6) << "step " << step + 1
                     << " (from t = " << time << " s, tau = " << current_tau

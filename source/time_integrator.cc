@@ -46,16 +46,16 @@ namespace dyncontact
 
 
   TimeIntegrator::TimeIntegrator(
-    const Scheme                       scheme,
-    const double                       tau,
-    const SemiDiscreteSystem          &system,
-    const ActiveSetSolver::Parameters &solver_parameters,
-    const IndexSet                    &locally_owned,
-    const IndexSet                    &locally_relevant,
-    const AffineConstraints<double>   &mesh_constraints,
-    const ContactRows                 &rows,
+    const Scheme                          scheme,
+    const double                          tau,
+    const SemiDiscreteSystem             &system,
+    const ActiveSetSolver::Parameters    &solver_parameters,
+    const IndexSet                       &locally_owned,
+    const IndexSet                       &locally_relevant,
+    const AffineConstraints<double>      &mesh_constraints,
+    const ContactRows                    &rows,
     const std::vector<std::vector<bool>> &constant_modes,
-    const MPI_Comm                     comm)
+    const MPI_Comm                        comm)
     : scheme(scheme)
     , tau(tau)
     , system(system)
@@ -133,7 +133,9 @@ namespace dyncontact
 
 
   void
-  TimeIntegrator::project(const VectorType &w, VectorType &v, StepReport &report)
+  TimeIntegrator::project(const VectorType &w,
+                          VectorType       &v,
+                          StepReport       &report)
   {
     VectorType          r(w);
     std::vector<double> multipliers;

@@ -1,5 +1,4 @@
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
@@ -43,14 +42,14 @@ namespace dyncontact
     : mat(material)
   {
     prm.enter_subsection("Scene");
-    length          = prm.get_double("Length");
-    height          = prm.get_double("Height");
-    impact_velocity = prm.get_double("Impact velocity");
-    initial_gap     = prm.get_double("Initial gap");
-    cells_along[0]  = prm.get_integer("Cells along length");
-    cells_along[1]  = prm.get_integer("Cells along length of body 2");
-    cells_across[0] = prm.get_integer("Cells across");
-    cells_across[1] = prm.get_integer("Cells across body 2");
+    length                  = prm.get_double("Length");
+    height                  = prm.get_double("Height");
+    impact_velocity         = prm.get_double("Impact velocity");
+    initial_gap             = prm.get_double("Initial gap");
+    cells_along[0]          = prm.get_integer("Cells along length");
+    cells_along[1]          = prm.get_integer("Cells along length of body 2");
+    cells_across[0]         = prm.get_integer("Cells across");
+    cells_across[1]         = prm.get_integer("Cells across body 2");
     const std::string slave = prm.get("Slave side");
     search_radius           = prm.get_double("Contact search radius");
     prm.leave_subsection();
@@ -59,8 +58,9 @@ namespace dyncontact
     if (cells_along[1] == 0)
       cells_along[1] = cells_along[0];
     if (cells_across[0] == 0)
-      cells_across[0] = std::max<unsigned int>(
-        1, std::lround(cells_along[0] * height / length));
+      cells_across[0] =
+        std::max<unsigned int>(1,
+                               std::lround(cells_along[0] * height / length));
     if (cells_across[1] == 0)
       cells_across[1] = cells_across[0];
     if (search_radius == 0.)
@@ -128,7 +128,7 @@ namespace dyncontact
 
   template <int dim>
   Tensor<1, dim>
-  TwoBars<dim>::initial_velocity(const Point<dim> &x,
+  TwoBars<dim>::initial_velocity(const Point<dim>  &x,
                                  const unsigned int body) const
   {
     Tensor<1, dim> v;
@@ -171,7 +171,7 @@ namespace dyncontact
                                                   mat.bar_wave_speed(),
                                                   impact_velocity,
                                                   initial_gap);
-    ExactValues<dim> values;
+    ExactValues<dim>    values;
     values.displacement[0]             = sign * bar.displacement;
     values.velocity[0]                 = sign * bar.velocity;
     values.displacement_gradient[0][0] = bar.strain;

@@ -31,8 +31,8 @@ main(int argc, char **argv)
 
   struct Case
   {
-    std::string  name, scene;
-    double       uniform_dofs; // the uniform mesh of the finest level
+    std::string name, scene;
+    double      uniform_dofs; // the uniform mesh of the finest level
   };
   for (const Case &c :
        {Case{"bar impact", "", 41. * 5. * 2.},
@@ -41,7 +41,8 @@ main(int argc, char **argv)
              "  set Cells across body 2 = 3\nend\n",
              41. * 9. * 2. + 41. * 13. * 2.}})
     {
-      const Statistics s = run(bar_prm(2, "N-CS++", 10, tau, 2.5, c.scene + adaptive));
+      const Statistics s =
+        run(bar_prm(2, "N-CS++", 10, tau, 2.5, c.scene + adaptive));
       log() << c.name << ":\n";
       const auto [begin, end] = contact_interval(s);
       log() << "  contact from " << fmt(begin) << " to " << fmt(end) << ": "
@@ -66,10 +67,11 @@ main(int argc, char **argv)
       log() << "  fewer DoFs on average than the uniform finest mesh: "
             << check(mean < c.uniform_dofs) << "\n";
 
-      const auto   e = s.column("energy_total"), w = s.column("dissipation_viscous"),
-                 jump = s.column("energy_transfer");
+      const auto e         = s.column("energy_total"),
+                 w         = s.column("dissipation_viscous"),
+                 jump      = s.column("energy_transfer");
       double       largest = 0., sum = 0., net = -1e300;
-      unsigned int n       = 0;
+      unsigned int n = 0;
       for (unsigned int i = 1; i < e.size(); ++i)
         {
           largest = std::max(largest, std::abs(jump[i]));

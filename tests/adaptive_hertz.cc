@@ -45,8 +45,8 @@ main(int argc, char **argv)
       largest = std::max(largest, std::abs(jump[i]));
     }
   const auto [begin, end] = contact_interval(s);
-  log() << "contact begins at " << fmt(begin, 2) << " (gap/v = 0.1): "
-        << check(std::abs(begin - 0.1) <= 0.02) << "\n";
+  log() << "contact begins at " << fmt(begin, 2)
+        << " (gap/v = 0.1): " << check(std::abs(begin - 0.1) <= 0.02) << "\n";
   log() << "largest energy jump of a transfer below 1% of E0: "
         << check(largest <= 0.01 * std::abs(e[0])) << "\n";
   log() << "E_total + dissipation - transfers non-increasing: "

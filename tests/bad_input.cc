@@ -4,14 +4,14 @@
 // and with --help the program prints every parameter with its documentation
 // and exits with status 0.
 
-#include "tests.h"
-
 #include <filesystem>
+
+#include "tests.h"
 
 namespace
 {
-  using testing::run_program;
   using testing::Outcome;
+  using testing::run_program;
 
   const std::string valid = "set Dimension = 2\n"
                             "subsection Time integration\n"
@@ -31,7 +31,8 @@ main(int argc, char **argv)
   const std::vector<std::pair<std::string, std::string>> cases = {
     {"unknown_key", "subsection Material\n  set Young modulus = 3\nend\n"},
     {"unknown_subsection", "subsection Materials\nend\n"},
-    {"youngs_modulus_zero", "subsection Material\n  set Young's modulus = 0\nend\n"},
+    {"youngs_modulus_zero",
+     "subsection Material\n  set Young's modulus = 0\nend\n"},
     {"youngs_modulus_negative",
      "subsection Material\n  set Young's modulus = -2\nend\n"},
     {"poisson_half", "subsection Material\n  set Poisson's ratio = 0.5\nend\n"},
@@ -48,7 +49,8 @@ main(int argc, char **argv)
      "subsection Time integration\n  set Time step = abc\nend\n"},
     {"end_time_negative",
      "subsection Time integration\n  set End time = -1\nend\n"},
-    {"unknown_scheme", "subsection Time integration\n  set Scheme = RK4\nend\n"},
+    {"unknown_scheme",
+     "subsection Time integration\n  set Scheme = RK4\nend\n"},
     {"unknown_mass_matrix",
      "subsection Time integration\n  set Mass matrix = diagonal\nend\n"},
     {"unknown_scene", "subsection Scene\n  set Name = pendulum\nend\n"},
@@ -57,10 +59,13 @@ main(int argc, char **argv)
     {"syntax_error", "subsection Material\n  Young's modulus 3\nend\n"},
     {"unclosed_subsection", "subsection Material\n"},
     {"output_directory_unwritable", "set Output directory = a_file/sub\n"},
-    {"youngs_modulus_nan", "subsection Material\n  set Young's modulus = nan\nend\n"},
-    {"time_step_inf", "subsection Time integration\n  set Time step = inf\nend\n"},
+    {"youngs_modulus_nan",
+     "subsection Material\n  set Young's modulus = nan\nend\n"},
+    {"time_step_inf",
+     "subsection Time integration\n  set Time step = inf\nend\n"},
     {"initial_gap_nan", "subsection Scene\n  set Initial gap = nan\nend\n"},
-    {"output_interval_negative", "subsection Output\n  set Output interval = -1\nend\n"},
+    {"output_interval_negative",
+     "subsection Output\n  set Output interval = -1\nend\n"},
     {"degree_zero", "set Polynomial degree = 0\n"},
     {"refinement_levels_inverted",
      "subsection Mesh refinement\n  set Minimum level = 3\n"
@@ -73,7 +78,8 @@ main(int argc, char **argv)
      "subsection Checkpointing\n  set Resume = true\nend\n"},
     {"solver_tolerance_one",
      "subsection Contact solver\n  set Linear solver tolerance = 1\nend\n"},
-    {"hertz_in_3d", "set Dimension = 3\nsubsection Scene\n  set Name = hertz\nend\n"},
+    {"hertz_in_3d",
+     "set Dimension = 3\nsubsection Scene\n  set Name = hertz\nend\n"},
     {"negative_load",
      "subsection Scene\n  set Name = hertz\n  set Load = -1\nend\n"},
   };
@@ -88,9 +94,8 @@ main(int argc, char **argv)
         outcome.text.find("dyncontact: error:") != std::string::npos &&
         outcome.text.find("Stacktrace") == std::string::npos &&
         outcome.text.find("An error occurred in") == std::string::npos;
-      log() << name << ": exit status non-zero: "
-            << check(outcome.status != 0) << ", clean message: "
-            << check(clean) << "\n"
+      log() << name << ": exit status non-zero: " << check(outcome.status != 0)
+            << ", clean message: " << check(clean) << "\n"
             << outcome.text.substr(outcome.text.find("dyncontact: error:"))
             << "\n";
     }
@@ -100,8 +105,8 @@ main(int argc, char **argv)
   for (const std::string file : {"missing.prm", "a_directory.prm"})
     {
       const Outcome outcome = run_program(file);
-      log() << file << ": exit status non-zero: "
-            << check(outcome.status != 0) << "\n"
+      log() << file << ": exit status non-zero: " << check(outcome.status != 0)
+            << "\n"
             << outcome.text << "\n";
     }
 

@@ -18,11 +18,10 @@ main(int argc, char **argv)
       double previous = 0.;
       for (const unsigned int cells : {20, 40, 80})
         {
-          const double     tau = 1. / cells / 2.;
-          const Statistics s   = run(bar_prm(2, scheme, cells, tau, 2.5));
+          const double     tau   = 1. / cells / 2.;
+          const Statistics s     = run(bar_prm(2, scheme, cells, tau, 2.5));
           const double     error = max_of(s.column("error_energy_norm"));
-          log() << "  cells " << cells << ": max error "
-                << fmt(error, 2);
+          log() << "  cells " << cells << ": max error " << fmt(error, 2);
           if (previous > 0.)
             log() << ", rate " << fmt(std::log2(previous / error), 2)
                   << ", decreasing: " << check(error < 0.9 * previous);

@@ -26,8 +26,8 @@ main(int argc, char **argv)
 
       const auto [begin, end] = contact_interval(s);
       log() << "  contact begins at " << fmt(begin) << " (exact "
-            << fmt(g0 / v0) << "): "
-            << check(std::abs(begin - g0 / v0) <= tolerance) << "\n";
+            << fmt(g0 / v0)
+            << "): " << check(std::abs(begin - g0 / v0) <= tolerance) << "\n";
       log() << "  contact ends at " << fmt(end) << " (exact "
             << fmt(g0 / v0 + 2. * L / c) << "): "
             << check(std::abs(end - (g0 / v0 + 2. * L / c)) <= tolerance)
@@ -52,7 +52,7 @@ main(int argc, char **argv)
       const auto   active = s.column("active_nodes");
       const auto   vn     = s.column("max_active_normal_velocity");
       double       vn_max = 0., vn_min = 1e300;
-      unsigned int n      = 0;
+      unsigned int n = 0;
       for (unsigned int i = 0; i + 1 < active.size(); ++i)
         if (active[i] > 0 && active[i + 1] > 0)
           {

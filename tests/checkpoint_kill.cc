@@ -4,17 +4,17 @@
 // 'Resume = true' it completes, and its statistics.tsv ends exactly as an
 // uninterrupted run's (final energy and momentum to 1e-10).
 
-#include "tests.h"
-
 #include <filesystem>
+
+#include "tests.h"
 
 namespace
 {
   std::vector<double>
   last_row(const std::string &file)
   {
-    std::ifstream       in(file);
-    std::string         line, last;
+    std::ifstream in(file);
+    std::string   line, last;
     while (std::getline(in, line))
       if (!line.empty())
         last = line;
@@ -58,11 +58,11 @@ main(int argc, char **argv)
                  resumed.find("resumed from") != std::string::npos)
         << "\n";
   run_clean(exe + " full.prm");
-  const auto a = last_row("results-full/statistics.tsv");
-  const auto b = last_row("results-killed/statistics.tsv");
+  const auto a    = last_row("results-full/statistics.tsv");
+  const auto b    = last_row("results-killed/statistics.tsv");
   bool       same = a.size() == b.size() && a.size() > 6 && a[0] == 800;
   for (const unsigned int c : {2u, 3u, 5u, 6u})
     same = same && std::abs(a[c] - b[c]) <= 1e-10 * std::abs(a[c]) + 1e-14;
-  log() << "final step, energies and momentum as uninterrupted: "
-        << check(same) << "\n";
+  log() << "final step, energies and momentum as uninterrupted: " << check(same)
+        << "\n";
 }

@@ -30,12 +30,13 @@ main(int argc, char **argv)
         std::make_pair(std::string("adaptive two bars"), adaptive)})
     {
       const std::string dir = name == "bar impact" ? "bar" : "two-bars";
-      auto prm = [&](const std::string &run, const double end, const bool resume) {
-        return bar_prm(2, "N-CS++", 10, 0.025, end, extra) +
-               "set Output directory = results-" + dir + "-" + run + "\n" +
-               "subsection Checkpointing\n  set Interval in steps = 50\n" +
-               "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
-      };
+      auto              prm =
+        [&](const std::string &run, const double end, const bool resume) {
+          return bar_prm(2, "N-CS++", 10, 0.025, end, extra) +
+                 "set Output directory = results-" + dir + "-" + run + "\n" +
+                 "subsection Checkpointing\n  set Interval in steps = 50\n" +
+                 "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
+        };
       const Statistics full = run(prm("full", 2.5, false));
       run(prm("split", 1.25, false));
       const Statistics resumed = run(prm("split", 2.5, true));
@@ -68,9 +69,9 @@ main(int argc, char **argv)
       log() << name << ": " << full.rows.size() - 1 << " steps; resumed at "
             << "half time, the statistics agree to 1e-10: "
             << check(same_shape && difference <= 1e-10) << "\n";
-      log() << "  final energy " << fmt(resumed.column("energy_total").back(), 6)
-            << ", momentum " << fmt(resumed.column("momentum_x").back(), 6)
-            << "\n";
+      log() << "  final energy "
+            << fmt(resumed.column("energy_total").back(), 6) << ", momentum "
+            << fmt(resumed.column("momentum_x").back(), 6) << "\n";
     }
 
   // a changed time step is refused

@@ -19,10 +19,10 @@ main(int argc, char **argv)
                                   "  set Impact velocity = 0.001\n"
                                   "  set Initial strain = -0.01\n"
                                   "end\n";
-  const std::string viscous = "subsection Material\n"
-                              "  set Viscous shear modulus = 0.05\n"
-                              "  set Viscous Lame parameter = 0.02\n"
-                              "end\n";
+  const std::string viscous     = "subsection Material\n"
+                                  "  set Viscous shear modulus = 0.05\n"
+                                  "  set Viscous Lame parameter = 0.02\n"
+                                  "end\n";
   const std::string consistent =
     "subsection Time integration\n  set Mass matrix = consistent\nend\n";
 
@@ -38,10 +38,10 @@ main(int argc, char **argv)
                         2.5,
                         free_flight + (with_viscosity ? viscous : "") +
                           (lumped ? "" : consistent)));
-          const auto e  = s.column("energy_total");
-          const auto w  = s.column("dissipation_viscous");
-          const auto px = s.column("momentum_x");
-          const auto py = s.column("momentum_y");
+          const auto e     = s.column("energy_total");
+          const auto w     = s.column("dissipation_viscous");
+          const auto px    = s.column("momentum_x");
+          const auto py    = s.column("momentum_y");
           double     drift = 0., momentum_drift = 0.;
           for (unsigned int i = 0; i < e.size(); ++i)
             {

@@ -70,7 +70,8 @@ main(int argc, char **argv)
     print<2>("  node (2, 0), on the surface", phi.find_image(Point<2>(2., 0.)));
     print<2>("  node (0, 0.2), above the rim vertex",
              phi.find_image(Point<2>(0., 0.2)));
-    print<2>("  node (4.5, 0.2), beyond the rim", phi.find_image(Point<2>(4.5, 0.2)));
+    print<2>("  node (4.5, 0.2), beyond the rim",
+             phi.find_image(Point<2>(4.5, 0.2)));
     print<2>("  node (2, 1.5), beyond the search radius",
              phi.find_image(Point<2>(2., 1.5)));
 
@@ -97,11 +98,10 @@ main(int argc, char **argv)
     for (unsigned int i = 0; i < n; ++i)
       {
         const double a = 2. * M_PI * i / n, b = 2. * M_PI * (i + 1) / n;
-        faces.push_back(
-          make_face<2>({Point<2>(std::cos(a), std::sin(a)),
-                        Point<2>(std::cos(b), std::sin(b))},
-                       Point<2>(),
-                       4 * i));
+        faces.push_back(make_face<2>({Point<2>(std::cos(a), std::sin(a)),
+                                      Point<2>(std::cos(b), std::sin(b))},
+                                     Point<2>(),
+                                     4 * i));
       }
     const ContactMapping<2> phi(faces, 0.5);
     const double            mid = M_PI / n; // bisector of facet 0
@@ -128,7 +128,8 @@ main(int argc, char **argv)
                                      100 * (2 * i + j)));
     const ContactMapping<3> phi(faces, 1.);
     out << "3D flat master surface z = 0:\n";
-    print<3>("  node (0.3, 1.7, 0.25)", phi.find_image(Point<3>(0.3, 1.7, 0.25)));
+    print<3>("  node (0.3, 1.7, 0.25)",
+             phi.find_image(Point<3>(0.3, 1.7, 0.25)));
     print<3>("  node (1, 1, 0), on the surface",
              phi.find_image(Point<3>(1., 1., 0.)));
     print<3>("  node (2.5, 1, 0.1), beyond the rim",
@@ -136,8 +137,8 @@ main(int argc, char **argv)
 
     const Point<3>   x(0.3, 1.7, 0.25);
     const auto       image = phi.find_image(x);
-    const ContactRow row   = make_two_body_row<3>(
-      x, {{0, 1, 2}}, *image, faces[image->face], 1);
+    const ContactRow row =
+      make_two_body_row<3>(x, {{0, 1, 2}}, *image, faces[image->face], 1);
     double sum_N = 0.;
     for (const auto &[dof, N] : row.master_nodes)
       sum_N += N;
@@ -150,9 +151,9 @@ main(int argc, char **argv)
                                      Point<3>(1, 0, 0.3),
                                      Point<3>(0, 1, -0.2),
                                      Point<3>(1, 1, 0.4)};
-    const MasterFace<3> face = make_face<3>(v, Point<3>(0.5, 0.5, -1.), 0);
+    const MasterFace<3>     face  = make_face<3>(v, Point<3>(0.5, 0.5, -1.), 0);
     const ContactMapping<3> phi({face}, 2.);
-    double max_difference = 0.;
+    double                  max_difference = 0.;
     for (const Point<3> x : {Point<3>(0.4, 0.6, 0.5),
                              Point<3>(0.8, 0.2, 0.7),
                              Point<3>(0.1, 0.9, 0.3)})
@@ -163,15 +164,17 @@ main(int argc, char **argv)
           for (unsigned int j = 0; j <= 400; ++j)
             {
               const double   s = i / 400., t = j / 400.;
-              const Point<3> p(v[0] * ((1 - s) * (1 - t)) + v[1] * (s * (1 - t)) +
-                               v[2] * ((1 - s) * t) + v[3] * (s * t));
+              const Point<3> p(v[0] * ((1 - s) * (1 - t)) +
+                               v[1] * (s * (1 - t)) + v[2] * ((1 - s) * t) +
+                               v[3] * (s * t));
               best = std::min(best, x.distance(p));
             }
         max_difference = std::max(max_difference, std::abs(image->gap - best));
         // the normal points from x to its image
-        max_difference = std::max(
-          max_difference,
-          (image->normal - (image->point - x) / x.distance(image->point)).norm());
+        max_difference = std::max(max_difference,
+                                  (image->normal - (image->point - x) /
+                                                     x.distance(image->point))
+                                    .norm());
       }
     out << "3D twisted face: closest point matches sampling to 1e-5: "
         << (max_difference < 1e-5 ? "OK" : "FAILED") << "\n";

@@ -7,10 +7,10 @@
 // never increases for N-CI and N-CS++ (Theorem 3.2; to 1e-9 of the largest
 // energy), and nothing penetrates beyond 1e-9 m.
 
-#include "tests.h"
-
 #include <filesystem>
 #include <set>
+
+#include "tests.h"
 
 int
 main(int argc, char **argv)

@@ -6,9 +6,9 @@
 // file, and two bodies sharing a vertex stop the executable with a clear
 // message and a non-zero exit status.
 
-#include "tests.h"
-
 #include <filesystem>
+
+#include "tests.h"
 
 int
 main(int argc, char **argv)
@@ -25,8 +25,9 @@ main(int argc, char **argv)
   const Statistics s =
     dyncontact::run_simulation(prm.str(), MPI_COMM_WORLD, example);
   const auto [begin, end] = contact_interval(s);
-  log() << "example: contact begins at " << fmt(begin, 3) << " (gap/v = 0.1): "
-        << check(std::abs(begin - 0.1) <= 2 * 0.0025) << "\n";
+  log() << "example: contact begins at " << fmt(begin, 3)
+        << " (gap/v = 0.1): " << check(std::abs(begin - 0.1) <= 2 * 0.0025)
+        << "\n";
   log() << "  E_total + dissipation non-increasing: "
         << check(max_energy_increase(s) <= 1e-10 * s.column("energy_total")[0])
         << "\n";
@@ -36,7 +37,8 @@ main(int argc, char **argv)
         << check(s.column("momentum_y_body2").back() > 0.) << "\n";
 
   // bad meshes and tags, given to the executable
-  const std::string mesh = std::string(DYNCONTACT_PRM_DIR) + "/meshes/two_blocks.msh";
+  const std::string mesh =
+    std::string(DYNCONTACT_PRM_DIR) + "/meshes/two_blocks.msh";
   std::ofstream("corrupt.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
                                   "$Nodes\nthis is not a mesh\n";
   // two quadrilaterals sharing an edge, tags 1 and 2
@@ -46,23 +48,26 @@ main(int argc, char **argv)
     << "$Elements\n2\n1 3 2 1 1 1 2 5 4\n2 3 2 2 2 2 3 6 5\n$EndElements\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
     {"unknown_body_tag", "  set Body 2 tags = 3\n"},
-    {"cells_without_body", "  set Body 2 tags =\n"
-                           "  set Contact tags of body 1 =\n"
-                           "  set Contact tags of body 2 =\n"},
+    {"cells_without_body",
+     "  set Body 2 tags =\n"
+     "  set Contact tags of body 1 =\n"
+     "  set Contact tags of body 2 =\n"},
     {"contact_tag_missing", "  set Contact tags of body 2 = 99\n"},
     {"dirichlet_tag_missing", "  set Dirichlet tags = 77\n"},
     {"neumann_tag_missing", "  set Neumann tags = 55\n"},
     {"missing_mesh_file", "  set Mesh file = no_such_file.msh\n"},
     {"corrupt_mesh_file", "  set Mesh file = corrupt.msh\n"},
-    {"bodies_share_a_vertex", "  set Mesh file = shared.msh\n"
-                              "  set Contact tags of body 1 =\n"
-                              "  set Contact tags of body 2 =\n"
-                              "  set Dirichlet tags =\n"},
+    {"bodies_share_a_vertex",
+     "  set Mesh file = shared.msh\n"
+     "  set Contact tags of body 1 =\n"
+     "  set Contact tags of body 2 =\n"
+     "  set Dirichlet tags =\n"},
     {"bad_velocity", "  set Initial velocity of body 2 = 1\n"},
-    {"twisted_cell", "  set Mesh file = twisted.msh\n"
-                     "  set Contact tags of body 1 =\n"
-                     "  set Contact tags of body 2 =\n"
-                     "  set Dirichlet tags =\n"},
+    {"twisted_cell",
+     "  set Mesh file = twisted.msh\n"
+     "  set Contact tags of body 1 =\n"
+     "  set Contact tags of body 2 =\n"
+     "  set Dirichlet tags =\n"},
   };
   // two quadrilaterals, the first with its vertices in a twisted order
   std::ofstream("twisted.msh")
@@ -97,8 +102,8 @@ main(int argc, char **argv)
     }
 
   // a failing input leaves the previous output in its directory alone
-  std::ifstream      before_in("results-gmsh/statistics.tsv");
-  std::stringstream  before;
+  std::ifstream     before_in("results-gmsh/statistics.tsv");
+  std::stringstream before;
   before << before_in.rdbuf();
   std::ofstream("overwrite.prm")
     << "set Dimension = 2\nset Output directory = results-gmsh\n"

@@ -4,7 +4,8 @@
 // The computed contact half-width (the measure of the active set) and peak
 // pressure are within 10% of Hertz's b = sqrt(4PR/(pi E*)) and
 // p0 = 2P/(pi b); the normal contact forces carry the load (P/2 on the
-// half model); nothing penetrates. Run also on two MPI ranks with the same output.
+// half model); nothing penetrates. Run also on two MPI ranks with the same
+// output.
 
 #include "tests.h"
 
@@ -37,7 +38,7 @@ main(int argc, char **argv)
                           "subsection Output\n"
                           "  set Write vtu = false\n"
                           "end\n";
-  const Statistics s = run(prm);
+  const Statistics  s   = run(prm);
 
   const double P = 0.005, R = 1., E_star = 1. / (2. * (1. - 0.3 * 0.3));
   const double b  = std::sqrt(4. * P * R / (M_PI * E_star));
@@ -53,10 +54,9 @@ main(int argc, char **argv)
   // the sum of the normal forces: the normals of the rows point to the
   // closest points on the curved cylinder, so they tilt slightly and the
   // sum of their magnitudes exceeds the vertical load a little
-  log() << "sum of normal contact forces / (P/2) = "
-        << fmt(force / (P / 2.), 3) << ": "
-        << check(force >= P / 2. * (1. - 1e-8) &&
-                 force <= P / 2. * 1.01)
+  log() << "sum of normal contact forces / (P/2) = " << fmt(force / (P / 2.), 3)
+        << ": "
+        << check(force >= P / 2. * (1. - 1e-8) && force <= P / 2. * 1.01)
         << "\n";
   log() << "no penetration: "
         << check(s.column("max_penetration").back() <= 1e-12) << "\n";

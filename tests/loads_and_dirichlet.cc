@@ -25,7 +25,8 @@ main(int argc, char **argv)
         const std::string extra =
           std::string("subsection Scene\n  set Initial gap = 100\n") +
           "  set Impact velocity = 0\n  set Fixed far end = true\n" +
-          (traction ? "  set End traction = 0.2\n" : "  set Body force = 0.2\n") +
+          (traction ? "  set End traction = 0.2\n" :
+                      "  set Body force = 0.2\n") +
           "end\n";
         const Statistics s =
           run(bar_prm(dim, "N-CS++", dim == 2 ? 40 : 20, 0.0125, 2.5, extra));
@@ -33,8 +34,8 @@ main(int argc, char **argv)
         const double static_energy =
           traction ? load * load * L * area / (2. * E) :
                      load * load * L * L * L * area / (6. * E);
-        const auto e  = s.column("energy_total");
-        const auto el = s.column("energy_elastic");
+        const auto e        = s.column("energy_total");
+        const auto el       = s.column("energy_elastic");
         const auto momentum = s.column("momentum_x");
         double     drift = 0., minimum = 0.;
         for (unsigned int i = 0; i < e.size(); ++i)

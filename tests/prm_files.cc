@@ -2,10 +2,10 @@
 // matrices, contact rows, initial step) with the end time set to zero (and
 // the static examples run as dynamic ones, so that nothing is solved).
 
-#include "tests.h"
-
 #include <filesystem>
 #include <set>
+
+#include "tests.h"
 
 int
 main(int argc, char **argv)
@@ -23,14 +23,13 @@ main(int argc, char **argv)
     {
       std::ifstream     in(file);
       std::stringstream text;
-      text << in.rdbuf()
-           << "\nset Output directory = results-" << file.stem().string()
+      text << in.rdbuf() << "\nset Output directory = results-"
+           << file.stem().string()
            << "\nsubsection Time integration\n  set End time = 0\n"
            << "  set Scheme = N-CS++\nend\n"
            << "subsection Output\n  set Write vtu = false\nend\n";
-      const Statistics s = dyncontact::run_simulation(text.str(),
-                                                      MPI_COMM_WORLD,
-                                                      file.string());
+      const Statistics s =
+        dyncontact::run_simulation(text.str(), MPI_COMM_WORLD, file.string());
       log() << file.filename().string() << ": parsed and set up, "
             << check(s.rows.size() == 1) << ", energy "
             << fmt(s.column("energy_total")[0], 3) << "\n";

@@ -7,9 +7,9 @@
 // limit. With 'Time step adaptation = true' the failed step is retried with
 // tau/2 and the run gets past the time where it failed before.
 
-#include "tests.h"
-
 #include <filesystem>
+
+#include "tests.h"
 
 namespace
 {
@@ -81,8 +81,8 @@ main(int argc, char **argv)
   run_program("full.prm");
   const auto a = last_row("results-full/statistics.tsv");
   const auto b = last_row("results-failing/statistics.tsv");
-  bool       same = resumed.status == 0 && a.size() == b.size() && a.size() > 6 &&
-              a[0] == b[0];
+  bool       same =
+    resumed.status == 0 && a.size() == b.size() && a.size() > 6 && a[0] == b[0];
   for (const unsigned int c : {1u, 2u, 3u, 5u, 6u, 7u})
     same = same && std::abs(a[c] - b[c]) <= 1e-10 * std::abs(a[c]) + 1e-14;
   log() << "resumed with 50 iterations, it completes and ends as the "

@@ -7,10 +7,10 @@
 // script (benchmarks/plot_study.py) makes its three PNGs from a small CSV
 // fixture (tests/study_fixture.csv).
 
-#include "tests.h"
-
 #include <filesystem>
 #include <map>
+
+#include "tests.h"
 
 namespace
 {
@@ -54,8 +54,8 @@ main(int argc, char **argv)
     "/prm/bar_impact.prm --out study.csv --work results-study --executable " +
     DYNCONTACT_EXECUTABLE +
     " --schemes N-CI,N-CS++ --tau0 0.025 --tau-levels 0,1 --mesh-levels 0,1"
-    " --joint --reference-pressure 1 --set 'Scene/Initial gap=0.1037'"
-    " --set 'Scene/Cells along length=20'");
+     " --joint --reference-pressure 1 --set 'Scene/Initial gap=0.1037'"
+     " --set 'Scene/Cells along length=20'");
   log() << "sweep ran: "
         << check(sweep.find("command failed") == std::string::npos) << "\n";
 
@@ -69,9 +69,8 @@ main(int argc, char **argv)
       const auto &r = by[scheme];
       log() << scheme << ": error decreases under joint refinement of h and "
             << "tau: "
-            << check(r.size() == 2 &&
-                     std::stod(r[1].at("error_max")) <
-                       0.9 * std::stod(r[0].at("error_max")))
+            << check(r.size() == 2 && std::stod(r[1].at("error_max")) <
+                                        0.9 * std::stod(r[0].at("error_max")))
             << "\n";
     }
   bool overshoot = by["N-CI"].size() == 2 && by["N-CS++"].size() == 2;
@@ -82,15 +81,15 @@ main(int argc, char **argv)
         << "\n";
   bool critical = by["N-CS++"].size() == 2;
   for (const auto &r : by["N-CS++"])
-    critical =
-      critical && std::abs(std::stod(r.at("critical_measure_sum")) - 0.1) < 1e-9;
+    critical = critical &&
+               std::abs(std::stod(r.at("critical_measure_sum")) - 0.1) < 1e-9;
   log() << "N-CS++: sum meas Gamma* = 0.1 (one impact) at both tau: "
         << check(critical) << "\n";
 
   // the plots from the fixture
-  const std::string plots = run_clean(python + " " + source +
-                                      "/benchmarks/plot_study.py " + SOURCE_DIR +
-                                      "/study_fixture.csv fixture bar");
+  const std::string plots =
+    run_clean(python + " " + source + "/benchmarks/plot_study.py " +
+              SOURCE_DIR + "/study_fixture.csv fixture bar");
   for (const std::string name : {"fixture_work_precision.png",
                                  "fixture_tau.png",
                                  "fixture_critical.png"})

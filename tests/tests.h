@@ -4,18 +4,18 @@
 #ifndef dyncontact_tests_h
 #define dyncontact_tests_h
 
-#include <sys/wait.h>
-
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <dyncontact/run.h>
 #include <dyncontact/statistics.h>
 
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -30,7 +30,7 @@ namespace testing
   inline std::ostream &
   log()
   {
-    static std::ofstream file;
+    static std::ofstream      file;
     static std::ostringstream sink;
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       {
@@ -173,8 +173,9 @@ namespace testing
   inline double
   max_energy_increase(const Statistics &s)
   {
-    const auto e = s.column("energy_total"), w = s.column("dissipation_viscous");
-    double     growth = -1e300;
+    const auto e  = s.column("energy_total"),
+               w  = s.column("dissipation_viscous");
+    double growth = -1e300;
     for (unsigned int i = 1; i < e.size(); ++i)
       growth = std::max(growth, (e[i] + w[i]) - (e[i - 1] + w[i - 1]));
     return growth;

@@ -30,7 +30,8 @@ main(int argc, char **argv)
       std::ostringstream extra;
       extra << "subsection Scene\n  set Name = two bars\n"
             << "  set Cells across = " << c.across_1 << "\n"
-            << "  set Cells across body 2 = " << c.across_2 << "\nend\n"
+            << "  set Cells across body 2 = " << c.across_2
+            << "\nend\n"
             // momentum is conserved to the linear solver's tolerance
             << "subsection Contact solver\n"
             << "  set Linear solver tolerance = 1e-14\nend\n";
@@ -46,10 +47,10 @@ main(int argc, char **argv)
                      std::abs(end - (g0 + 2. * L)) <= tolerance)
             << "\n";
 
-      const double p_max = max_of(s.column("max_contact_pressure"));
+      const double p_max  = max_of(s.column("max_contact_pressure"));
       double       p_mean = 0.;
-      const auto   force = s.column("contact_force");
-      const auto   area  = s.column("active_measure");
+      const auto   force  = s.column("contact_force");
+      const auto   area   = s.column("active_measure");
       for (unsigned int i = 0; i < force.size(); ++i)
         if (area[i] > 0.)
           p_mean = std::max(p_mean, force[i] / area[i]);
@@ -82,7 +83,8 @@ main(int argc, char **argv)
       log() << "  relative normal velocity at active nodes zero: "
             << check(vn_max < 1e-8) << "\n";
       log() << "  E_total non-increasing: "
-            << check(max_energy_increase(s) <= 1e-10 * s.column("energy_total")[0])
+            << check(max_energy_increase(s) <=
+                     1e-10 * s.column("energy_total")[0])
             << "\n";
     }
 }

@@ -24,9 +24,9 @@ main(int argc, char **argv)
         << "subsection Output\n  set Write vtu = true\n"
         << "  set Output interval = 0.05\nend\n";
       const std::string program =
-        n_ranks == 1 ? std::string(DYNCONTACT_EXECUTABLE) :
-                       std::string(DYNCONTACT_MPIEXEC) + " -np 2 " +
-                         DYNCONTACT_EXECUTABLE;
+        n_ranks == 1 ?
+          std::string(DYNCONTACT_EXECUTABLE) :
+          std::string(DYNCONTACT_MPIEXEC) + " -np 2 " + DYNCONTACT_EXECUTABLE;
       const std::string run_output =
         run_clean(program + " " + directory + ".prm");
       log() << n_ranks << " rank(s): run "
@@ -43,8 +43,7 @@ main(int argc, char **argv)
     << "subsection Output\n  set Write vtu = true\n"
     << "  set Output interval = 0.1\nend\n";
   log() << "two bars: run "
-        << check(run_clean(std::string(DYNCONTACT_EXECUTABLE) +
-                           " two-bars.prm")
+        << check(run_clean(std::string(DYNCONTACT_EXECUTABLE) + " two-bars.prm")
                    .find("command failed") == std::string::npos)
         << "\n";
   log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +

@@ -3,7 +3,6 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -48,8 +47,8 @@ namespace dyncontact
   public:
     struct Parameters
     {
-      unsigned int max_iterations     = 50;
-      double       linear_tolerance   = 1e-12;
+      unsigned int max_iterations        = 50;
+      double       linear_tolerance      = 1e-12;
       unsigned int max_linear_iterations = 2000;
       /// An initially penetrating configuration: rejected, or projected
       /// onto K_h with a warning.
@@ -111,10 +110,10 @@ namespace dyncontact
      * (zero for inactive rows); both are the same on all ranks.
      */
     Result
-    solve(const VectorType     &r,
-          VectorType           &v,
-          std::vector<char>    &active,
-          std::vector<double>  &multipliers) const;
+    solve(const VectorType    &r,
+          VectorType          &v,
+          std::vector<char>   &active,
+          std::vector<double> &multipliers) const;
 
     /// (C v - g)_p for all rows, the same on all ranks.
     std::vector<double>
@@ -126,7 +125,7 @@ namespace dyncontact
 
   private:
     void
-    make_constraints(const std::vector<char> &active,
+    make_constraints(const std::vector<char>   &active,
                      AffineConstraints<double> &constraints,
                      const bool                 homogeneous) const;
 
@@ -155,7 +154,7 @@ namespace dyncontact
     AffineConstraints<double> mesh_constraints;
     const ContactRows        *rows = nullptr;
 
-    const MatrixType *H = nullptr;
+    const MatrixType *H             = nullptr;
     bool              H_is_diagonal = false;
     bool              pointwise     = false;
     /// Diagonal of H (owned entries) and its value at each row's

@@ -29,8 +29,8 @@ namespace dyncontact
   {
     std::vector<Point<dim>> vertices;
     Point<dim>              cell_center;
-    std::vector<std::array<std::vector<std::pair<global_dof_index, double>>,
-                           dim>>
+    std::vector<
+      std::array<std::vector<std::pair<global_dof_index, double>>, dim>>
                                   node_dofs;
     std::vector<global_dof_index> node_dof0;
 
@@ -102,11 +102,11 @@ namespace dyncontact
   /// (FE_Q<dim-1>(@p degree) shape functions at the image point).
   template <int dim>
   ContactRow
-  make_two_body_row(const Point<dim>                                    &x,
-                    const std::array<global_dof_index, dim>             &slave_dofs,
-                    const Image<dim>                                    &image,
-                    const MasterFace<dim>                               &face,
-                    const unsigned int                                   degree);
+  make_two_body_row(const Point<dim>                        &x,
+                    const std::array<global_dof_index, dim> &slave_dofs,
+                    const Image<dim>                        &image,
+                    const MasterFace<dim>                   &face,
+                    const unsigned int                       degree);
 } // namespace dyncontact
 
 #endif

@@ -55,12 +55,12 @@ namespace dyncontact
     /// Declares the subsection (by default "Material") with its entries.
     static void
     declare_parameters(dealii::ParameterHandler &prm,
-                       const std::string         &subsection = "Material");
+                       const std::string        &subsection = "Material");
 
     /// Reads the subsection and checks every value's range.
     void
     parse_parameters(dealii::ParameterHandler &prm,
-                     const std::string         &subsection = "Material");
+                     const std::string        &subsection = "Material");
   };
 } // namespace dyncontact
 

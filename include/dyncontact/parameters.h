@@ -49,8 +49,8 @@ namespace dyncontact
     bool time_step_adaptation = false;
 
     // subsection Reference solution
-    bool        write_reference    = false;
-    bool        compare_reference  = false;
+    bool        write_reference   = false;
+    bool        compare_reference = false;
     std::string reference_directory;
     double      reference_interval = 0.1;
 

@@ -202,7 +202,7 @@ namespace dyncontact
   template <int dim>
   void
   merge_bodies(const std::vector<const Triangulation<dim, dim> *> &bodies,
-               Triangulation<dim, dim>                          &result);
+               Triangulation<dim, dim>                            &result);
 } // namespace dyncontact
 
 #endif

@@ -3,11 +3,8 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -101,9 +98,9 @@ namespace dyncontact
                    const double       time,
                    const StepReport  &report);
 
-    const RunParameters parameters;
-    MPI_Comm            comm;
-    ConditionalOStream  pcout;
+    const RunParameters          parameters;
+    MPI_Comm                     comm;
+    ConditionalOStream           pcout;
     std::unique_ptr<TimerOutput> timer;
 
     std::unique_ptr<Scene<dim>> scene;
@@ -142,22 +139,22 @@ namespace dyncontact
     std::unique_ptr<TimeIntegrator> integrator;
     /// Evaluates C v and C v - g for the diagnostics.
     std::unique_ptr<ActiveSetSolver> row_evaluator;
-    VectorType                      u;
-    VectorType                      udot;
-    VectorType                      u_old;
-    VectorType                      udot_old;
+    VectorType                       u;
+    VectorType                       udot;
+    VectorType                       u_old;
+    VectorType                       udot_old;
     /// The time step in use (Time step adaptation may halve it).
     double current_tau;
 
     Statistics    statistics;
     std::ofstream statistics_file;
-    double        viscous_dissipation   = 0.;
-    double        critical_measure_sum  = 0.;
+    double        viscous_dissipation  = 0.;
+    double        critical_measure_sum = 0.;
     /// Energy change and largest K_h violation from mesh transfers since
     /// the last statistics row.
-    double energy_transfer      = 0.;
-    double transfer_penetration = 0.;
-    unsigned int  output_counter        = 0;
+    double                                      energy_transfer      = 0.;
+    double                                      transfer_penetration = 0.;
+    unsigned int                                output_counter       = 0;
     std::vector<std::pair<double, std::string>> pvd_records;
   };
 } // namespace dyncontact

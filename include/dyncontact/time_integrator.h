@@ -9,8 +9,8 @@ namespace dyncontact
 {
   enum class Scheme
   {
-    contact_implicit,           // N-CI, eq. (11)
-    contact_stabilized,         // N-CS, Deuflhard-Krause-Ertel 2007
+    contact_implicit,            // N-CI, eq. (11)
+    contact_stabilized,          // N-CS, Deuflhard-Krause-Ertel 2007
     improved_contact_stabilized, // N-CS++, eq. (12)
     quasi_static                 // min 1/2 v^T A v - f^T v on K_h
   };
@@ -25,10 +25,10 @@ namespace dyncontact
   /// per mesh. B is nullptr for an elastic body.
   struct SemiDiscreteSystem
   {
-    const MatrixType *M = nullptr;
-    const MatrixType *A = nullptr;
-    const MatrixType *B = nullptr;
-    const VectorType *f = nullptr;
+    const MatrixType *M           = nullptr;
+    const MatrixType *A           = nullptr;
+    const MatrixType *B           = nullptr;
+    const VectorType *f           = nullptr;
     bool              lumped_mass = true;
   };
 
@@ -61,16 +61,16 @@ namespace dyncontact
   class TimeIntegrator
   {
   public:
-    TimeIntegrator(const Scheme                        scheme,
-                   const double                        tau,
-                   const SemiDiscreteSystem           &system,
-                   const ActiveSetSolver::Parameters &solver_parameters,
-                   const IndexSet                     &locally_owned,
-                   const IndexSet                     &locally_relevant,
-                   const AffineConstraints<double>    &mesh_constraints,
-                   const ContactRows                  &rows,
+    TimeIntegrator(const Scheme                          scheme,
+                   const double                          tau,
+                   const SemiDiscreteSystem             &system,
+                   const ActiveSetSolver::Parameters    &solver_parameters,
+                   const IndexSet                       &locally_owned,
+                   const IndexSet                       &locally_relevant,
+                   const AffineConstraints<double>      &mesh_constraints,
+                   const ContactRows                    &rows,
                    const std::vector<std::vector<bool>> &constant_modes,
-                   const MPI_Comm                      comm);
+                   const MPI_Comm                        comm);
 
     /// Initial velocity: N-CS++ replaces udot_0 by (P(u0 + tau udot_0) -
     /// u0)/tau (eq. 12c); the other schemes keep it.
@@ -136,10 +136,10 @@ namespace dyncontact
     const SemiDiscreteSystem system;
     MatrixType               S;
     /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
-    MatrixType preconditioner_matrix;
-    ActiveSetSolver          displacement_solver;
-    ActiveSetSolver          projection_solver;
-    const ContactRows       *rows;
+    MatrixType         preconditioner_matrix;
+    ActiveSetSolver    displacement_solver;
+    ActiveSetSolver    projection_solver;
+    const ContactRows *rows;
     // warm starts of the two active-set solvers
     std::vector<char> displacement_active;
     std::vector<char> projection_active;

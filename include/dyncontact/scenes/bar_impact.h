@@ -72,11 +72,11 @@ namespace dyncontact
     body_force(const unsigned int) const override;
 
     Tensor<1, dim>
-    initial_displacement(const Point<dim> &x,
+    initial_displacement(const Point<dim>  &x,
                          const unsigned int body) const override;
 
     Tensor<1, dim>
-    initial_velocity(const Point<dim> &x,
+    initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
 
     std::optional<RigidObstacle<dim>>

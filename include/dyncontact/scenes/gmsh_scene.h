@@ -60,21 +60,21 @@ namespace dyncontact
     body_force(const unsigned int body) const override;
 
     Tensor<1, dim>
-    initial_velocity(const Point<dim> &x,
+    initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
 
   private:
-    std::string                               mesh_file;
-    std::vector<Material>                     materials;
-    std::array<std::set<unsigned int>, 2>     body_tags;
-    std::set<unsigned int>                    dirichlet_tags;
-    std::set<unsigned int>                    neumann_tags;
-    Tensor<1, dim>                            traction;
+    std::string                                    mesh_file;
+    std::vector<Material>                          materials;
+    std::array<std::set<unsigned int>, 2>          body_tags;
+    std::set<unsigned int>                         dirichlet_tags;
+    std::set<unsigned int>                         neumann_tags;
+    Tensor<1, dim>                                 traction;
     std::array<std::vector<types::boundary_id>, 2> contact_tags;
-    std::array<Tensor<1, dim>, 2>             velocity;
-    Tensor<1, dim>                            gravity;
-    int                                       slave_side;
-    double                                    search_radius;
+    std::array<Tensor<1, dim>, 2>                  velocity;
+    Tensor<1, dim>                                 gravity;
+    int                                            slave_side;
+    double                                         search_radius;
   };
 } // namespace dyncontact
 

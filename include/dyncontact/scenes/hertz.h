@@ -63,7 +63,7 @@ namespace dyncontact
     neumann_tractions() const override;
 
     Tensor<1, dim>
-    initial_velocity(const Point<dim> &x,
+    initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
 
     /// Hertz's contact half-width (2D) or radius (3D), in m.

@@ -48,7 +48,7 @@ namespace dyncontact
     contact_pairs() const override;
 
     Tensor<1, dim>
-    initial_velocity(const Point<dim> &x,
+    initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
 
     bool
