@@ -30,12 +30,7 @@ main(int argc, char **argv)
   log() << "E_total non-increasing: "
         << check(max_energy_increase(s) <= 1e-10 * s.column("energy_total")[0])
         << "\n";
-  const auto active = s.column("active_nodes");
-  const auto vn     = s.column("max_active_normal_velocity");
-  double     vn_max = 0.;
-  for (unsigned int i = 0; i + 1 < active.size(); ++i)
-    if (active[i] > 0 && active[i + 1] > 0)
-      vn_max = std::max(vn_max, vn[i]);
+  const double vn_max = persistent_normal_velocity(s).first;
   log() << "normal velocity at persistently active nodes below 1e-8: "
         << check(vn_max < 1e-8) << "\n";
   log() << "max penetration below 1e-10: "

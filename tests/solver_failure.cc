@@ -11,23 +11,6 @@
 
 #include "tests.h"
 
-namespace
-{
-  std::vector<double>
-  last_row(const std::string &file)
-  {
-    std::ifstream in(file);
-    std::string   line, last;
-    while (std::getline(in, line))
-      if (!line.empty())
-        last = line;
-    std::vector<double> values;
-    std::stringstream   s(last);
-    for (std::string cell; std::getline(s, cell, '\t');)
-      values.push_back(std::stod(cell));
-    return values;
-  }
-} // namespace
 
 int
 main(int argc, char **argv)

@@ -121,6 +121,40 @@ namespace testing
     return *std::min_element(v.begin(), v.end());
   }
 
+  /// Largest |c_p . udot| over the rows active in a step and the next one
+  /// (persistent contact), and the number of such steps.
+  inline std::pair<double, unsigned int>
+  persistent_normal_velocity(const Statistics &s)
+  {
+    const auto   active = s.column("active_nodes");
+    const auto   vn     = s.column("max_active_normal_velocity");
+    double       vn_max = 0.;
+    unsigned int n      = 0;
+    for (unsigned int i = 0; i + 1 < active.size(); ++i)
+      if (active[i] > 0 && active[i + 1] > 0)
+        {
+          vn_max = std::max(vn_max, vn[i]);
+          ++n;
+        }
+    return {vn_max, n};
+  }
+
+  /// The last row of a statistics.tsv file, as numbers.
+  inline std::vector<double>
+  last_row(const std::string &file)
+  {
+    std::ifstream in(file);
+    std::string   line, last;
+    while (std::getline(in, line))
+      if (!line.empty())
+        last = line;
+    std::vector<double> values;
+    std::stringstream   s(last);
+    for (std::string cell; std::getline(s, cell, '\t');)
+      values.push_back(std::stod(cell));
+    return values;
+  }
+
   struct Outcome
   {
     int         status;
