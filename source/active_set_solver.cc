@@ -101,7 +101,9 @@ namespace dyncontact
     mesh_constraints.clear();
     mesh_constraints.copy_from(constraints);
     rows = &contact_rows;
-    H    = nullptr;
+    Tx.reinit(locally_owned, comm);
+    additions.reinit(locally_owned, ghost_set, comm, true);
+    H = nullptr;
   }
 
 
@@ -204,8 +206,7 @@ namespace dyncontact
     // z <- T^T z: every owned constrained entry z_i is added, times the
     // coefficient, to the entries z_j it depends on (possibly owned
     // elsewhere), and then set to zero.
-    VectorType additions;
-    additions.reinit(locally_owned, ghost_set, comm, true);
+    additions = 0.;
     for (const auto &line : homogeneous.get_lines())
       if (locally_owned.is_element(line.index))
         {
@@ -228,7 +229,7 @@ namespace dyncontact
                                    VectorType                      &y,
                                    const VectorType                &x) const
   {
-    VectorType Tx(x);
+    Tx = x;
     homogeneous.distribute(Tx);
     H->vmult(y, Tx);
     transpose_distribute(homogeneous, y);

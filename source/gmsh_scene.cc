@@ -151,11 +151,9 @@ namespace dyncontact
           "Initial velocity of body " + std::to_string(b + 1);
         velocity[b] = parse_vector<dim>(prm.get(v), v);
       }
-    gravity                 = parse_vector<dim>(prm.get("Gravity"), "Gravity");
-    const std::string slave = prm.get("Slave side");
-    search_radius           = prm.get_double("Contact search radius");
+    gravity       = parse_vector<dim>(prm.get("Gravity"), "Gravity");
+    pair_settings = contact_pair_settings(prm);
     prm.leave_subsection();
-    slave_side = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
 
     AssertThrow(!mesh_file.empty(),
                 ExcMessage("Scene/Mesh file must name a .msh file."));
@@ -172,7 +170,7 @@ namespace dyncontact
                   (contact_tags[0].empty() || !body_tags[1].empty()),
                 ExcMessage("Scene: contact needs two bodies, and contact "
                            "tags on both (Contact tags of body 1 and 2)."));
-    AssertThrow(search_radius > 0. || contact_tags[0].empty(),
+    AssertThrow(pair_settings.search_radius > 0. || contact_tags[0].empty(),
                 ExcMessage("Scene/Contact search radius must be > 0 (m) for "
                            "the gmsh scene: it has no default."));
   }
@@ -260,11 +258,10 @@ namespace dyncontact
   {
     if (contact_tags[0].empty())
       return {};
-    ContactPair pair;
-    pair.first_side    = contact_tags[0];
-    pair.second_side   = contact_tags[1];
-    pair.slave_side    = slave_side;
-    pair.search_radius = search_radius;
+    ContactPair pair = pair_settings;
+    pair.first_side  = contact_tags[0];
+    pair.second_side = contact_tags[1];
+
     return {pair};
   }
 

@@ -72,19 +72,17 @@ namespace dyncontact
     , materials(materials)
   {
     prm.enter_subsection("Scene");
-    radius                  = prm.get_double("Radius");
-    block_width             = prm.get_double("Block width");
-    block_depth             = prm.get_double("Block depth");
-    load                    = prm.get_double("Load");
-    drop_velocity           = prm.get_double("Drop velocity");
-    initial_gap             = prm.get_double("Initial gap");
-    contact_refinements     = prm.get_integer("Contact zone refinements");
-    const std::string slave = prm.get("Slave side");
-    search_radius           = prm.get_double("Contact search radius");
+    radius              = prm.get_double("Radius");
+    block_width         = prm.get_double("Block width");
+    block_depth         = prm.get_double("Block depth");
+    load                = prm.get_double("Load");
+    drop_velocity       = prm.get_double("Drop velocity");
+    initial_gap         = prm.get_double("Initial gap");
+    contact_refinements = prm.get_integer("Contact zone refinements");
+    pair_settings       = contact_pair_settings(prm);
     prm.leave_subsection();
-    slave_side = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
-    if (search_radius == 0.)
-      search_radius = initial_gap + 0.5 * radius;
+    if (pair_settings.search_radius == 0.)
+      pair_settings.search_radius = initial_gap + 0.5 * radius;
 
     AssertThrow(std::isfinite(radius) && radius > 0.,
                 ExcMessage("Scene/Radius must be a finite number > 0 (m)."));
@@ -233,11 +231,10 @@ namespace dyncontact
   std::vector<ContactPair>
   Hertz<dim>::contact_pairs() const
   {
-    ContactPair pair;
-    pair.first_side    = {curved_id};
-    pair.second_side   = {block_top_id};
-    pair.slave_side    = slave_side;
-    pair.search_radius = search_radius;
+    ContactPair pair = pair_settings;
+    pair.first_side  = {curved_id};
+    pair.second_side = {block_top_id};
+
     return {pair};
   }
 

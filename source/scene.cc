@@ -46,6 +46,18 @@ namespace dyncontact
 
 
 
+  ContactPair
+  contact_pair_settings(ParameterHandler &prm)
+  {
+    ContactPair       pair;
+    const std::string slave = prm.get("Slave side");
+    pair.slave_side         = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
+    pair.search_radius      = prm.get_double("Contact search radius");
+    return pair;
+  }
+
+
+
   template <int dim>
   std::unique_ptr<Scene<dim>>
   create_scene(ParameterHandler            &prm,

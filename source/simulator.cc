@@ -682,14 +682,25 @@ namespace dyncontact
 
 
   template <int dim>
+  std::pair<double, double>
+  Simulator<dim>::energies(VectorType &M_udot) const
+  {
+    mass_matrix.vmult(M_udot, udot);
+    const double kinetic = 0.5 * (M_udot * udot);
+    VectorType   Au(u);
+    stiffness_matrix.vmult(Au, u);
+    return {kinetic, 0.5 * (Au * u) - load * u};
+  }
+
+
+
+  template <int dim>
   double
   Simulator<dim>::total_energy() const
   {
-    VectorType tmp(u);
-    mass_matrix.vmult(tmp, udot);
-    const double kinetic = 0.5 * (tmp * udot);
-    stiffness_matrix.vmult(tmp, u);
-    return kinetic + 0.5 * (tmp * u) - load * u;
+    VectorType M_udot(udot);
+    const auto [kinetic, elastic] = energies(M_udot);
+    return kinetic + elastic;
   }
 
 
@@ -794,9 +805,7 @@ namespace dyncontact
     const double       force_factor = integrator->force_factor();
 
     VectorType tmp(u);
-    // energies: E_kin = 1/2 udot^T M udot, E_el = 1/2 u^T A u - f^T u
-    mass_matrix.vmult(tmp, udot);
-    const double kinetic = 0.5 * (tmp * udot);
+    const auto [kinetic, elastic] = energies(tmp);
     // momentum: sum of M udot over the DoFs of each body and component
     // (Theorem 3.1); body_momentum[3 b + d]
     std::vector<double> body_momentum(3 * scene->n_bodies(), 0.);
@@ -809,8 +818,6 @@ namespace dyncontact
     for (unsigned int b = 0; b < scene->n_bodies(); ++b)
       for (unsigned int d = 0; d < 3; ++d)
         momentum[d] += body_momentum[3 * b + d];
-    stiffness_matrix.vmult(tmp, u);
-    const double elastic = 0.5 * (tmp * u) - load * u;
     if (step > 0 && viscous_matrix.m() > 0)
       {
         VectorType du(u);

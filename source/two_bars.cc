@@ -42,19 +42,16 @@ namespace dyncontact
     : mat(material)
   {
     prm.enter_subsection("Scene");
-    length                  = prm.get_double("Length");
-    height                  = prm.get_double("Height");
-    impact_velocity         = prm.get_double("Impact velocity");
-    initial_gap             = prm.get_double("Initial gap");
-    cells_along[0]          = prm.get_integer("Cells along length");
-    cells_along[1]          = prm.get_integer("Cells along length of body 2");
-    cells_across[0]         = prm.get_integer("Cells across");
-    cells_across[1]         = prm.get_integer("Cells across body 2");
-    const std::string slave = prm.get("Slave side");
-    search_radius           = prm.get_double("Contact search radius");
+    length          = prm.get_double("Length");
+    height          = prm.get_double("Height");
+    impact_velocity = prm.get_double("Impact velocity");
+    initial_gap     = prm.get_double("Initial gap");
+    cells_along[0]  = prm.get_integer("Cells along length");
+    cells_along[1]  = prm.get_integer("Cells along length of body 2");
+    cells_across[0] = prm.get_integer("Cells across");
+    cells_across[1] = prm.get_integer("Cells across body 2");
+    pair_settings   = contact_pair_settings(prm);
     prm.leave_subsection();
-
-    slave_side = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
     if (cells_along[1] == 0)
       cells_along[1] = cells_along[0];
     if (cells_across[0] == 0)
@@ -63,8 +60,8 @@ namespace dyncontact
                                std::lround(cells_along[0] * height / length));
     if (cells_across[1] == 0)
       cells_across[1] = cells_across[0];
-    if (search_radius == 0.)
-      search_radius = 2. * initial_gap + height;
+    if (pair_settings.search_radius == 0.)
+      pair_settings.search_radius = 2. * initial_gap + height;
 
     AssertThrow(std::isfinite(length) && length > 0.,
                 ExcMessage("Scene/Length must be a finite number > 0 (m)."));
@@ -116,11 +113,10 @@ namespace dyncontact
   std::vector<ContactPair>
   TwoBars<dim>::contact_pairs() const
   {
-    ContactPair pair;
-    pair.first_side    = {1};
-    pair.second_side   = {2};
-    pair.slave_side    = slave_side;
-    pair.search_radius = search_radius;
+    ContactPair pair = pair_settings;
+    pair.first_side  = {1};
+    pair.second_side = {2};
+
     return {pair};
   }
 

@@ -162,6 +162,10 @@ namespace dyncontact
     VectorType          diagonal;
     std::vector<double> row_scaling;
 
+    /// Work vectors of the condensed operator, made once per mesh: T x, and
+    /// the additions of T^T to entries owned elsewhere (writable ghosts).
+    mutable VectorType                                    Tx;
+    mutable VectorType                                    additions;
     std::vector<std::vector<bool>>                        constant_modes;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG>    amg;
     std::unique_ptr<TrilinosWrappers::PreconditionJacobi> jacobi;

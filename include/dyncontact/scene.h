@@ -183,6 +183,12 @@ namespace dyncontact
   void
   declare_scene_parameters(ParameterHandler &prm);
 
+  /// Reads "Slave side" and "Contact search radius" (inside subsection
+  /// "Scene") into a contact pair without boundary ids; a search radius of
+  /// 0 means the scene's default.
+  ContactPair
+  contact_pair_settings(ParameterHandler &prm);
+
   /// Creates the scene named in "Scene/Name" with the materials of its
   /// bodies (the first from subsection "Material", the second from
   /// "Material of body 2"); relative file names in the scene's parameters

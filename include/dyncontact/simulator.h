@@ -80,6 +80,10 @@ namespace dyncontact
     /// source/reference_solution.cc).
     double
     process_reference_state(const double time);
+    /// E_kin = 1/2 udot^T M udot and E_el = 1/2 u^T A u - f^T u of the
+    /// current state; @p M_udot receives M udot (for the momentum).
+    std::pair<double, double>
+    energies(VectorType &M_udot) const;
     /// E_kin + E_el of the current state.
     double
     total_energy() const;

@@ -73,8 +73,8 @@ namespace dyncontact
     std::array<std::vector<types::boundary_id>, 2> contact_tags;
     std::array<Tensor<1, dim>, 2>                  velocity;
     Tensor<1, dim>                                 gravity;
-    int                                            slave_side;
-    double                                         search_radius;
+    /// Slave side and search radius of the contact pair.
+    ContactPair pair_settings;
   };
 } // namespace dyncontact
 

@@ -93,8 +93,8 @@ namespace dyncontact
     double                drop_velocity;
     double                initial_gap;
     unsigned int          contact_refinements;
-    int                   slave_side;
-    double                search_radius;
+    /// Slave side and search radius of the contact pair.
+    ContactPair pair_settings;
   };
 } // namespace dyncontact
 

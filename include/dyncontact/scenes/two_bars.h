@@ -68,8 +68,8 @@ namespace dyncontact
     double                      initial_gap;
     std::array<unsigned int, 2> cells_along;
     std::array<unsigned int, 2> cells_across;
-    int                         slave_side;
-    double                      search_radius;
+    /// Slave side and search radius of the contact pair.
+    ContactPair pair_settings;
   };
 } // namespace dyncontact
 
