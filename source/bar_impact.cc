@@ -295,15 +295,6 @@ namespace dyncontact
 
 
   template <int dim>
-  double
-  BarImpact<dim>::reference_contact_pressure() const
-  {
-    return mat.density * mat.bar_wave_speed() * impact_velocity;
-  }
-
-
-
-  template <int dim>
   ExactValues<dim>
   BarImpact<dim>::exact_solution(const Point<dim> &p, const double t) const
   {

@@ -129,20 +129,6 @@ namespace dyncontact
 
 
   template <int dim>
-  double
-  Hertz<dim>::hertz_peak_pressure() const
-  {
-    const double a = hertz_contact_size();
-    if (a == 0.)
-      return 0.;
-    if (dim == 2)
-      return 2. * load / (M_PI * a);
-    return 3. * load / (2. * M_PI * a * a);
-  }
-
-
-
-  template <int dim>
   void
   Hertz<dim>::create_coarse_mesh(Triangulation<dim, dim> &tria) const
   {

@@ -16,11 +16,6 @@ namespace dyncontact
     return std::sqrt(youngs_modulus / density);
   }
 
-  double
-  Material::p_wave_speed() const
-  {
-    return std::sqrt((lambda() + 2. * mu()) / density);
-  }
 
   void
   Material::declare_parameters(ParameterHandler  &prm,

@@ -913,9 +913,7 @@ namespace dyncontact
 
   template <int dim>
   void
-  Simulator<dim>::output_results(const unsigned int step,
-                                 const double       time,
-                                 const StepReport  &report)
+  Simulator<dim>::output_results(const double time, const StepReport &report)
   {
     TimerOutput::Scope t(*timer, "output");
 
@@ -1006,7 +1004,6 @@ namespace dyncontact
         std::ofstream pvd(parameters.output_directory + "/solution.pvd");
         DataOutBase::write_pvd_record(pvd, pvd_records);
       }
-    (void)step;
   }
 
 
@@ -1162,7 +1159,7 @@ namespace dyncontact
         }
         record_step(0, 0., report, 0.);
         if (parameters.write_vtu)
-          output_results(0, 0., report);
+          output_results(0., report);
       }
 
     // the static problem is solved once, at t = End time
@@ -1236,7 +1233,7 @@ namespace dyncontact
         if (parameters.write_vtu &&
             (time >= next_output - 1e-9 * current_tau || !more()))
           {
-            output_results(step, time, report);
+            output_results(time, report);
             next_output += parameters.output_interval;
           }
         if (parameters.refinement.interval > 0 && more() &&

@@ -146,15 +146,6 @@ namespace dyncontact
 
 
   template <int dim>
-  double
-  TwoBars<dim>::reference_contact_pressure() const
-  {
-    return mat.density * mat.bar_wave_speed() * impact_velocity;
-  }
-
-
-
-  template <int dim>
   ExactValues<dim>
   TwoBars<dim>::exact_solution(const Point<dim> &x, const double t) const
   {

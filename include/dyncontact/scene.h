@@ -170,13 +170,6 @@ namespace dyncontact
     {
       return {};
     }
-
-    /// The exact contact pressure (Pa) while in contact, 0 if unknown.
-    virtual double
-    reference_contact_pressure() const
-    {
-      return 0.;
-    }
   };
 
   /// Declares subsection "Scene" with the entries of every scene.

@@ -98,9 +98,7 @@ namespace dyncontact
     void
     adapt_mesh();
     void
-    output_results(const unsigned int step,
-                   const double       time,
-                   const StepReport  &report);
+    output_results(const double time, const StepReport &report);
 
     const RunParameters          parameters;
     MPI_Comm                     comm;

@@ -112,11 +112,6 @@ namespace dyncontact
       return scheme == Scheme::quasi_static ? 1. : 2. / (tau * tau);
     }
 
-    const MatrixType &
-    step_matrix() const
-    {
-      return S;
-    }
 
   private:
     /// r(w) of the displacement step.

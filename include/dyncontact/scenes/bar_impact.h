@@ -88,8 +88,6 @@ namespace dyncontact
     ExactValues<dim>
     exact_solution(const Point<dim> &x, const double t) const override;
 
-    double
-    reference_contact_pressure() const override;
 
   private:
     /// Rotates a vector from the bar's frame to the global frame.

@@ -70,15 +70,7 @@ namespace dyncontact
     double
     hertz_contact_size() const;
 
-    /// Hertz's peak pressure p0, in Pa.
-    double
-    hertz_peak_pressure() const;
 
-    double
-    reference_contact_pressure() const override
-    {
-      return hertz_peak_pressure();
-    }
 
   private:
     double

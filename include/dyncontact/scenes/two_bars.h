@@ -57,8 +57,6 @@ namespace dyncontact
     ExactValues<dim>
     exact_solution(const Point<dim> &x, const double t) const override;
 
-    double
-    reference_contact_pressure() const override;
 
   private:
     Material                    mat;
