@@ -53,7 +53,7 @@ bar = open("prm/bar_impact.prm").read()
 for kind in ["uniform", "adaptive"]:
     for level in [1, 2, 3]:
         tau = 1.0 / (10 * 2 ** level) / 2
-        text = bar + "\nsubsection Scene\n  set Cells along length = 10\nend\n"
+        text = bar + "\nsubsection Scene\n  subsection Bar impact\n    set Cells along length = 10\n  end\nend\n"
         text += "subsection Time integration\n  set Time step = %g\nend\n" % tau
         if kind == "uniform":
             text += "subsection Mesh\n  set Initial global refinements = %d\nend\n" % level
@@ -65,7 +65,7 @@ for kind in ["uniform", "adaptive"]:
 
 # Hertz drop: reference = uniform, two levels finer than the finest below
 hertz = open("prm/hertz_drop.prm").read().replace("set End time  = 1", "set End time  = 0.4")
-hertz += "\nsubsection Scene\n  set Contact zone refinements = 0\nend\n"
+hertz += "\nsubsection Scene\n  subsection Hertz\n    set Contact zone refinements = 0\n  end\nend\n"
 
 
 def force_history(rows):

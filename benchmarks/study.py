@@ -13,7 +13,7 @@ Usage (from the repository's top folder, after tools/setup.sh):
   benchmarks/study.py --prm prm/bar_impact.prm --out study.csv \\
       --schemes N-CI,N-CS,N-CS++ --tau0 0.025 --tau-levels 0,1,2 \\
       --mesh-levels 0,1 [--joint] [--reference-factor 16] \\
-      [--reference-pressure 1] [--set "Scene/Initial gap=0.1037"] ...
+      [--reference-pressure 1] [--set "Scene/Bar impact/Initial gap=0.1037"] ...
 --joint pairs tau level k with mesh level k (h and tau refined together);
 otherwise every tau level is run on every mesh level. --set overrides
 entries of the base prm (subsection/.../entry=value)."""

@@ -34,12 +34,12 @@ main(int argc, char **argv)
     std::string name, scene;
     double      uniform_dofs; // the uniform mesh of the finest level
   };
-  for (const Case &c :
-       {Case{"bar impact", "", 41. * 5. * 2.},
-        Case{"two bars, 2 and 3 cells across (coarse)",
-             "subsection Scene\n  set Name = two bars\n  set Cells across = 2\n"
-             "  set Cells across body 2 = 3\nend\n",
-             41. * 9. * 2. + 41. * 13. * 2.}})
+  for (const Case &c : {Case{"bar impact", "", 41. * 5. * 2.},
+                        Case{"two bars, 2 and 3 cells across (coarse)",
+                             scene_prm("two bars",
+                                       "    set Cells across = 2\n"
+                                       "    set Cells across body 2 = 3\n"),
+                             41. * 9. * 2. + 41. * 13. * 2.}})
     {
       const Statistics s =
         run(bar_prm(2, "N-CS++", 10, tau, 2.5, c.scene + adaptive));

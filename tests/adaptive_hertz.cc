@@ -16,9 +16,10 @@ main(int argc, char **argv)
 
   std::ofstream("hertz.prm")
     << "set Dimension = 2\nset Output directory = results-hertz\n"
-    << "subsection Scene\n  set Name = hertz\n  set Load = 0.005\n"
-    << "  set Drop velocity = 0.1\n  set Initial gap = 0.01\n"
-    << "  set Contact zone refinements = 0\nend\n"
+    << scene_prm("hertz",
+                 "    set Load = 0.005\n    set Drop velocity = 0.1\n"
+                 "    set Initial gap = 0.01\n"
+                 "    set Contact zone refinements = 0\n")
     << "subsection Mesh\n  set Initial global refinements = 1\nend\n"
     << "subsection Material\n  set Poisson's ratio = 0.3\n"
     << "  set Viscous shear modulus = 0.01\nend\n"

@@ -55,7 +55,8 @@ main(int argc, char **argv)
      "subsection Time integration\n  set Mass matrix = diagonal\nend\n"},
     {"unknown_scene", "subsection Scene\n  set Name = pendulum\nend\n"},
     {"dimension_four", "set Dimension = 4\n"},
-    {"bar_length_zero", "subsection Scene\n  set Length = 0\nend\n"},
+    {"bar_length_zero",
+     testing::scene_entries("Bar impact", "    set Length = 0\n")},
     {"syntax_error", "subsection Material\n  Young's modulus 3\nend\n"},
     {"unclosed_subsection", "subsection Material\n"},
     {"output_directory_unwritable", "set Output directory = a_file/sub\n"},
@@ -63,7 +64,8 @@ main(int argc, char **argv)
      "subsection Material\n  set Young's modulus = nan\nend\n"},
     {"time_step_inf",
      "subsection Time integration\n  set Time step = inf\nend\n"},
-    {"initial_gap_nan", "subsection Scene\n  set Initial gap = nan\nend\n"},
+    {"initial_gap_nan",
+     testing::scene_entries("Bar impact", "    set Initial gap = nan\n")},
     {"output_interval_negative",
      "subsection Output\n  set Output interval = -1\nend\n"},
     {"degree_zero", "set Polynomial degree = 0\n"},
@@ -80,8 +82,21 @@ main(int argc, char **argv)
      "subsection Contact solver\n  set Linear solver tolerance = 1\nend\n"},
     {"hertz_in_3d",
      "set Dimension = 3\nsubsection Scene\n  set Name = hertz\nend\n"},
-    {"negative_load",
-     "subsection Scene\n  set Name = hertz\n  set Load = -1\nend\n"},
+    {"negative_load", testing::scene_prm("hertz", "    set Load = -1\n")},
+    {"old_flat_scene_entry", "subsection Scene\n  set Length = 2\nend\n"},
+    {"old_flat_slave_side",
+     "subsection Scene\n  set Name = two bars\n  set Slave side = 2\nend\n"},
+    {"entry_of_another_scene",
+     "subsection Scene\n  subsection Bar impact\n    set Radius = 2\n"
+     "  end\nend\n"},
+    {"gmsh_without_search_radius",
+     testing::scene_prm("gmsh",
+                        "    set Mesh file = " +
+                          std::string(DYNCONTACT_PRM_DIR) +
+                          "/meshes/two_blocks.msh\n"
+                          "    set Body 2 tags = 2\n"
+                          "    set Contact tags of body 1 = 11\n"
+                          "    set Contact tags of body 2 = 12\n")},
   };
   std::ofstream("a_file") << "not a directory\n";
 

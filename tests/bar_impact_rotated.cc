@@ -25,7 +25,8 @@ main(int argc, char **argv)
                       cells,
                       tau,
                       2.5,
-                      "subsection Scene\n  set Rotation angle = 30\nend\n"));
+                      scene_entries("Bar impact",
+                                    "    set Rotation angle = 30\n")));
         double difference = 0., scale = 0.;
         for (const std::string column : {"energy_total",
                                          "contact_force",

@@ -15,9 +15,9 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace testing;
 
-  const std::string adaptive = "subsection Scene\n  set Name = two bars\n"
-                               "  set Cells across = 1\n"
-                               "  set Cells across body 2 = 2\nend\n"
+  const std::string adaptive = scene_prm("two bars",
+                                         "    set Cells across = 1\n"
+                                         "    set Cells across body 2 = 2\n") +
                                "subsection Mesh refinement\n"
                                "  set Refinement interval = 4\n"
                                "  set Maximum level = 2\n"

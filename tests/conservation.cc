@@ -14,15 +14,15 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace testing;
 
-  const std::string free_flight = "subsection Scene\n"
-                                  "  set Initial gap = 100\n"
-                                  "  set Impact velocity = 0.001\n"
-                                  "  set Initial strain = -0.01\n"
-                                  "end\n";
-  const std::string viscous     = "subsection Material\n"
-                                  "  set Viscous shear modulus = 0.05\n"
-                                  "  set Viscous Lame parameter = 0.02\n"
-                                  "end\n";
+  const std::string free_flight =
+    scene_entries("Bar impact",
+                  "    set Initial gap = 100\n"
+                  "    set Impact velocity = 0.001\n"
+                  "    set Initial strain = -0.01\n");
+  const std::string viscous = "subsection Material\n"
+                              "  set Viscous shear modulus = 0.05\n"
+                              "  set Viscous Lame parameter = 0.02\n"
+                              "end\n";
   const std::string consistent =
     "subsection Time integration\n  set Mass matrix = consistent\nend\n";
 

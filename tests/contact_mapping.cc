@@ -8,7 +8,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <dyncontact/contact_mapping.h>
+#include <dyncontact/contact/contact_mapping.h>
 
 #include <cmath>
 #include <fstream>

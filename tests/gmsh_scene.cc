@@ -79,13 +79,14 @@ main(int argc, char **argv)
     {
       std::ofstream(name + ".prm")
         << "set Dimension = 2\nset Output directory = results-" << name
-        << "\nsubsection Scene\n  set Name = gmsh\n"
+        << "\nsubsection Scene\n  set Name = gmsh\n  subsection Gmsh\n"
         << "  set Mesh file = " << mesh << "\n"
         << "  set Body 1 tags = 1\n  set Body 2 tags = 2\n"
         << "  set Dirichlet tags = 10\n  set Contact tags of body 1 = 11\n"
         << "  set Contact tags of body 2 = 12\n"
-        << "  set Contact search radius = 0.2\n"
-        << text << "end\nsubsection Time integration\n"
+        << text << "end\nend\n"
+        << "subsection Contact\n  set Search radius = 0.2\nend\n"
+        << "subsection Time integration\n"
         << "  set End time = 0.01\n  set Time step = 0.005\nend\n";
       const Outcome outcome = run_program(name + ".prm");
       std::string   message = outcome.text.substr(
@@ -107,8 +108,7 @@ main(int argc, char **argv)
   before << before_in.rdbuf();
   std::ofstream("overwrite.prm")
     << "set Dimension = 2\nset Output directory = results-gmsh\n"
-    << "subsection Scene\n  set Name = gmsh\n  set Mesh file = corrupt.msh\n"
-    << "end\n";
+    << testing::scene_prm("gmsh", "    set Mesh file = corrupt.msh\n");
   const Outcome     failed = run_program("overwrite.prm");
   std::ifstream     after_in("results-gmsh/statistics.tsv");
   std::stringstream after;

@@ -23,11 +23,12 @@ main(int argc, char **argv)
       {
         const double      load = 0.2;
         const std::string extra =
-          std::string("subsection Scene\n  set Initial gap = 100\n") +
-          "  set Impact velocity = 0\n  set Fixed far end = true\n" +
-          (traction ? "  set End traction = 0.2\n" :
-                      "  set Body force = 0.2\n") +
-          "end\n";
+          scene_entries("Bar impact",
+                        std::string("    set Initial gap = 100\n") +
+                          "    set Impact velocity = 0\n"
+                          "    set Fixed far end = true\n" +
+                          (traction ? "    set End traction = 0.2\n" :
+                                      "    set Body force = 0.2\n"));
         const Statistics s =
           run(bar_prm(dim, "N-CS++", dim == 2 ? 40 : 20, 0.0125, 2.5, extra));
         const double area = (dim == 2 ? H : H * H);

@@ -5,7 +5,9 @@
 // good state as a checkpoint; resumed from it with a larger iteration limit
 // the run completes and ends exactly as an uninterrupted run with that
 // limit. With 'Time step adaptation = true' the failed step is retried with
-// tau/2 and the run gets past the time where it failed before.
+// tau/2 and the run gets past the time where it failed before. A CG that
+// runs out of iterations takes the same path (checkpoint, message naming
+// 'Maximum linear iterations'), not an exception from inside the solver.
 
 #include <filesystem>
 
@@ -24,13 +26,16 @@ main(int argc, char **argv)
                 const bool         resume) {
     std::ostringstream s;
     s << "set Dimension = 2\nset Output directory = " << dir << "\n"
-      << "subsection Scene\n  set Name = gmsh\n  set Mesh file = "
-      << DYNCONTACT_PRM_DIR << "/meshes/two_blocks.msh\n"
-      << "  set Body 1 tags = 1\n  set Body 2 tags = 2\n"
-      << "  set Dirichlet tags = 10\n  set Contact tags of body 1 = 11\n"
-      << "  set Contact tags of body 2 = 12\n"
-      << "  set Initial velocity of body 2 = 0, -0.5\n"
-      << "  set Contact search radius = 0.2\nend\n"
+      << testing::scene_prm(
+           "gmsh",
+           "    set Mesh file = " + std::string(DYNCONTACT_PRM_DIR) +
+             "/meshes/two_blocks.msh\n"
+             "    set Body 1 tags = 1\n    set Body 2 tags = 2\n"
+             "    set Dirichlet tags = 10\n"
+             "    set Contact tags of body 1 = 11\n"
+             "    set Contact tags of body 2 = 12\n"
+             "    set Initial velocity of body 2 = 0, -0.5\n")
+      << "subsection Contact\n  set Search radius = 0.2\nend\n"
       << "subsection Material\n  set Young's modulus = 1e4\n"
       << "  set Poisson's ratio = 0.3\nend\n"
       << "subsection Material of body 2\n  set Poisson's ratio = 0.3\nend\n"
@@ -78,4 +83,20 @@ main(int argc, char **argv)
                  std::string::npos)
         << ", and the run gets past t = 0.185 s: "
         << check(times.size() > 2 && times[1] > 0.25) << "\n";
+
+  // a CG failure: the same path, with the limit named
+  std::ofstream("cg.prm") << prm("results-cg", 50, false, false)
+                          << "subsection Contact solver\n"
+                          << "  set Maximum linear iterations = 2\nend\n";
+  const Outcome cg    = run_program("cg.prm");
+  const auto    cg_at = cg.text.find("dyncontact: error:");
+  log() << "a CG failure stops the run: exit status non-zero: "
+        << check(cg.status != 0) << ", message names the limit: "
+        << check(cg_at != std::string::npos &&
+                 cg.text.find("'Contact solver/Maximum linear iterations'") !=
+                   std::string::npos &&
+                 cg.text.find("Stacktrace") == std::string::npos)
+        << ", the last good state is a checkpoint: "
+        << check(std::filesystem::exists("results-cg/checkpoints/last"))
+        << "\n";
 }

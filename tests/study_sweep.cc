@@ -54,8 +54,9 @@ main(int argc, char **argv)
     "/prm/bar_impact.prm --out study.csv --work results-study --executable " +
     DYNCONTACT_EXECUTABLE +
     " --schemes N-CI,N-CS++ --tau0 0.025 --tau-levels 0,1 --mesh-levels 0,1"
-     " --joint --reference-pressure 1 --set 'Scene/Initial gap=0.1037'"
-     " --set 'Scene/Cells along length=20'");
+     " --joint --reference-pressure 1"
+     " --set 'Scene/Bar impact/Initial gap=0.1037'"
+     " --set 'Scene/Bar impact/Cells along length=20'");
   log() << "sweep ran: "
         << check(sweep.find("command failed") == std::string::npos) << "\n";
 

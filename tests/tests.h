@@ -7,12 +7,13 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <dyncontact/run.h>
-#include <dyncontact/statistics.h>
+#include <dyncontact/core/run.h>
+#include <dyncontact/core/statistics.h>
 
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -61,6 +62,8 @@ namespace testing
   /// The bar impact of prm/bar_impact.prm (E = rho = v0 = L = 1, g0 = 0.1,
   /// H = 0.1) with the given scheme, cells along the length, time step and
   /// end time; @p extra is appended (later entries override earlier ones).
+  /// The same geometry is also given to the scene "two bars", so that
+  /// @p extra may switch to it (with scene_prm("two bars", ...)).
   inline std::string
   bar_prm(const unsigned int dim,
           const std::string &scheme,
@@ -73,10 +76,13 @@ namespace testing
     s << std::setprecision(17);
     s << "set Dimension = " << dim << "\n"
       << "set Output directory = output-" << scheme << "-" << cells << "\n"
-      << "subsection Scene\n  set Name = bar impact\n  set Length = 1\n"
-      << "  set Height = 0.1\n  set Impact velocity = 1\n"
-      << "  set Initial gap = 0.1\n  set Cells along length = " << cells
-      << "\nend\n"
+      << "subsection Scene\n  set Name = bar impact\n";
+    for (const std::string subsection : {"Bar impact", "Two bars"})
+      s << "  subsection " << subsection << "\n    set Length = 1\n"
+        << "    set Height = 0.1\n    set Impact velocity = 1\n"
+        << "    set Initial gap = 0.1\n    set Cells along length = " << cells
+        << "\n  end\n";
+    s << "end\n"
       << "subsection Material\n  set Young's modulus = 1\n"
       << "  set Poisson's ratio = 0\n  set Density = 1\nend\n"
       << "subsection Time integration\n  set Scheme = " << scheme
@@ -85,6 +91,26 @@ namespace testing
       << "subsection Output\n  set Write vtu = false\nend\n"
       << extra;
     return s.str();
+  }
+
+  /// "subsection Scene" choosing the scene @p name, with @p entries (lines
+  /// "set ... = ...") in the scene's own subsection (its name with a
+  /// capital first letter).
+  inline std::string
+  scene_prm(const std::string &name, const std::string &entries = "")
+  {
+    std::string subsection = name;
+    subsection[0]          = std::toupper(subsection[0]);
+    return "subsection Scene\n  set Name = " + name + "\n  subsection " +
+           subsection + "\n" + entries + "  end\nend\n";
+  }
+
+  /// @p entries in subsection Scene/@p subsection, without choosing a scene.
+  inline std::string
+  scene_entries(const std::string &subsection, const std::string &entries)
+  {
+    return "subsection Scene\n  subsection " + subsection + "\n" + entries +
+           "  end\nend\n";
   }
 
   inline Statistics

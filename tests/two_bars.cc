@@ -28,10 +28,11 @@ main(int argc, char **argv)
     {
       const double h = 1. / c.along, tau = h / 2., L = 1., H = 0.1, g0 = 0.1;
       std::ostringstream extra;
-      extra << "subsection Scene\n  set Name = two bars\n"
-            << "  set Cells across = " << c.across_1 << "\n"
-            << "  set Cells across body 2 = " << c.across_2
-            << "\nend\n"
+      extra << scene_prm("two bars",
+                         "    set Cells across = " +
+                           std::to_string(c.across_1) +
+                           "\n    set Cells across body 2 = " +
+                           std::to_string(c.across_2) + "\n")
             // momentum is conserved to the linear solver's tolerance
             << "subsection Contact solver\n"
             << "  set Linear solver tolerance = 1e-14\nend\n";

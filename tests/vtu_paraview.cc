@@ -39,7 +39,8 @@ main(int argc, char **argv)
   std::ofstream("two-bars.prm")
     << bar_prm(2, "N-CS++", 40, 0.0125, 1.2)
     << "set Output directory = results-two-bars\n"
-    << "subsection Scene\n  set Name = two bars\n  set Slave side = 2\nend\n"
+    << scene_prm("two bars")
+    << "subsection Contact\n  set Slave side = 2\nend\n"
     << "subsection Output\n  set Write vtu = true\n"
     << "  set Output interval = 0.1\nend\n";
   log() << "two bars: run "

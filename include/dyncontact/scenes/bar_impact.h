@@ -1,7 +1,7 @@
 #ifndef dyncontact_scenes_bar_impact_h
 #define dyncontact_scenes_bar_impact_h
 
-#include <dyncontact/scene.h>
+#include <dyncontact/scenes/interface.h>
 
 namespace dyncontact
 {
@@ -36,25 +36,14 @@ namespace dyncontact
   class BarImpact : public Scene<dim>
   {
   public:
-    BarImpact(ParameterHandler &prm, const Material &material);
-
     static void
     declare_parameters(ParameterHandler &prm);
 
-    std::string
-    name() const override
-    {
-      return "bar impact";
-    }
+    void
+    parse_parameters(ParameterHandler &prm) override;
 
     void
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
-
-    const Material &
-    material(const unsigned int) const override
-    {
-      return mat;
-    }
 
     std::vector<types::boundary_id>
     contact_boundary_ids() const override
@@ -96,7 +85,6 @@ namespace dyncontact
     Tensor<1, dim>
     rotate_back(const Tensor<1, dim> &v) const;
 
-    Material     mat;
     double       length;
     double       height;
     double       impact_velocity;

@@ -1,7 +1,7 @@
 #ifndef dyncontact_scenes_gmsh_scene_h
 #define dyncontact_scenes_gmsh_scene_h
 
-#include <dyncontact/scene.h>
+#include <dyncontact/scenes/interface.h>
 
 #include <set>
 
@@ -19,18 +19,11 @@ namespace dyncontact
   class GmshScene : public Scene<dim>
   {
   public:
-    GmshScene(ParameterHandler            &prm,
-              const std::vector<Material> &materials,
-              const std::string           &input_directory);
-
     static void
     declare_parameters(ParameterHandler &prm);
 
-    std::string
-    name() const override
-    {
-      return "gmsh";
-    }
+    void
+    parse_parameters(ParameterHandler &prm) override;
 
     void
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
@@ -39,12 +32,6 @@ namespace dyncontact
     n_bodies() const override
     {
       return body_tags[1].empty() ? 1 : 2;
-    }
-
-    const Material &
-    material(const unsigned int body) const override
-    {
-      return materials[body];
     }
 
     std::vector<ContactPair>
@@ -65,7 +52,6 @@ namespace dyncontact
 
   private:
     std::string                                    mesh_file;
-    std::vector<Material>                          materials;
     std::array<std::set<unsigned int>, 2>          body_tags;
     std::set<unsigned int>                         dirichlet_tags;
     std::set<unsigned int>                         neumann_tags;
@@ -73,8 +59,6 @@ namespace dyncontact
     std::array<std::vector<types::boundary_id>, 2> contact_tags;
     std::array<Tensor<1, dim>, 2>                  velocity;
     Tensor<1, dim>                                 gravity;
-    /// Slave side and search radius of the contact pair.
-    ContactPair pair_settings;
   };
 } // namespace dyncontact
 

@@ -1,7 +1,7 @@
 #ifndef dyncontact_scenes_hertz_h
 #define dyncontact_scenes_hertz_h
 
-#include <dyncontact/scene.h>
+#include <dyncontact/scenes/interface.h>
 
 namespace dyncontact
 {
@@ -17,23 +17,21 @@ namespace dyncontact
    * unit thickness) the half-width b = sqrt(4PR/(pi E*)) and the peak
    * pressure p0 = 2P/(pi b); in 3D (load P) the radius a = (3PR/(4E*))^{1/3}
    * and p0 = 3P/(2 pi a^2); 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
+   *
+   * The two registered scenes, "hertz" (2D, subsection Scene/Hertz) and "ball
+   * on block" (3D, subsection Scene/Ball on block), are this class with
+   * their own subsection.
    */
   template <int dim>
-  class Hertz : public Scene<dim>
+  class HertzScene : public Scene<dim>
   {
   public:
-    Hertz(ParameterHandler            &prm,
-          const std::vector<Material> &materials,
-          const std::string           &name);
-
+    /// Declares the entries of subsection Scene/@p subsection.
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, const std::string &subsection);
 
-    std::string
-    name() const override
-    {
-      return scene_name;
-    }
+    void
+    parse_parameters(ParameterHandler &prm) override;
 
     void
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
@@ -45,12 +43,6 @@ namespace dyncontact
     n_bodies() const override
     {
       return 2;
-    }
-
-    const Material &
-    material(const unsigned int body) const override
-    {
-      return materials[body];
     }
 
     std::vector<ContactPair>
@@ -72,21 +64,60 @@ namespace dyncontact
 
 
 
+  protected:
+    /// @p subsection: "Hertz" or "Ball on block"; @p scene_dimension: the
+    /// only dimension the scene supports.
+    HertzScene(const std::string &subsection,
+               const unsigned int scene_dimension)
+      : subsection(subsection)
+      , scene_dimension(scene_dimension)
+    {}
+
   private:
     double
     effective_modulus() const;
 
-    std::string           scene_name;
-    std::vector<Material> materials;
-    double                radius;
-    double                block_width;
-    double                block_depth;
-    double                load;
-    double                drop_velocity;
-    double                initial_gap;
-    unsigned int          contact_refinements;
-    /// Slave side and search radius of the contact pair.
-    ContactPair pair_settings;
+    std::string  subsection;
+    unsigned int scene_dimension;
+    double       radius;
+    double       block_width;
+    double       block_depth;
+    double       load;
+    double       drop_velocity;
+    double       initial_gap;
+    unsigned int contact_refinements;
+  };
+
+  /// The 2D scene "hertz": a half-cylinder on a block.
+  template <int dim>
+  class Hertz : public HertzScene<dim>
+  {
+  public:
+    Hertz()
+      : HertzScene<dim>("Hertz", 2)
+    {}
+
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      HertzScene<dim>::declare_parameters(prm, "Hertz");
+    }
+  };
+
+  /// The 3D scene "ball on block".
+  template <int dim>
+  class BallOnBlock : public HertzScene<dim>
+  {
+  public:
+    BallOnBlock()
+      : HertzScene<dim>("Ball on block", 3)
+    {}
+
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      HertzScene<dim>::declare_parameters(prm, "Ball on block");
+    }
   };
 } // namespace dyncontact
 

@@ -1,7 +1,7 @@
 #ifndef dyncontact_scenes_two_bars_h
 #define dyncontact_scenes_two_bars_h
 
-#include <dyncontact/scene.h>
+#include <dyncontact/scenes/interface.h>
 
 namespace dyncontact
 {
@@ -18,16 +18,11 @@ namespace dyncontact
   class TwoBars : public Scene<dim>
   {
   public:
-    TwoBars(ParameterHandler &prm, const Material &material);
-
     static void
     declare_parameters(ParameterHandler &prm);
 
-    std::string
-    name() const override
-    {
-      return "two bars";
-    }
+    void
+    parse_parameters(ParameterHandler &prm) override;
 
     void
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
@@ -38,10 +33,11 @@ namespace dyncontact
       return 2;
     }
 
-    const Material &
-    material(const unsigned int) const override
+    /// Both bars are of the material of subsection "Material".
+    std::vector<std::string>
+    material_subsections() const override
     {
-      return mat;
+      return {"Material", "Material"};
     }
 
     std::vector<ContactPair>
@@ -59,15 +55,12 @@ namespace dyncontact
 
 
   private:
-    Material                    mat;
     double                      length;
     double                      height;
     double                      impact_velocity;
     double                      initial_gap;
     std::array<unsigned int, 2> cells_along;
     std::array<unsigned int, 2> cells_across;
-    /// Slave side and search radius of the contact pair.
-    ContactPair pair_settings;
   };
 } // namespace dyncontact
 

@@ -1,0 +1,242 @@
+#ifndef dyncontact_active_set_solver_h
+#define dyncontact_active_set_solver_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dyncontact/contact/contact_rows.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  using namespace dealii;
+  using VectorType = TrilinosWrappers::MPI::Vector;
+  using MatrixType = TrilinosWrappers::SparseMatrix;
+
+  /**
+   * The contact rows as an operator on distributed vectors: (C v)_p and
+   * (C v - g)_p for every row, the same on all ranks. Each row is evaluated
+   * by the rank that owns its slave node, from a vector with the ghost
+   * entries the rows need.
+   */
+  class ContactRowOperator
+  {
+  public:
+    explicit ContactRowOperator(const MPI_Comm comm);
+
+    /// Sets the partitioning and the rows (once per mesh).
+    void
+    reinit(const IndexSet    &locally_owned,
+           const IndexSet    &locally_relevant,
+           const ContactRows &rows);
+
+    /// (C v)_p for all rows (no gap subtracted).
+    std::vector<double>
+    apply(const VectorType &v) const;
+
+    /// (C v - g)_p for all rows.
+    std::vector<double>
+    constraint_values(const VectorType &v) const;
+
+    /// The locally relevant DoFs plus every DoF a row touches.
+    const IndexSet &
+    ghost_set() const
+    {
+      return ghosts;
+    }
+
+    const ContactRows &
+    rows() const
+    {
+      return *contact_rows;
+    }
+
+    std::size_t
+    size() const
+    {
+      return contact_rows == nullptr ? 0 : contact_rows->size();
+    }
+
+  private:
+    MPI_Comm           comm;
+    IndexSet           locally_owned;
+    IndexSet           ghosts;
+    const ContactRows *contact_rows = nullptr;
+  };
+
+
+
+  /**
+   * Solves   min 1/2 v^T H v - r^T v   subject to   C v <= g
+   * (ALGORITHMS.md section 3) by the primal-dual active-set method
+   * (semismooth Newton, as in deal.II's step-41/42). Each active row
+   * eliminates one slave component through an AffineConstraints line merged
+   * with the hanging-node and Dirichlet constraints; the condensed SPD
+   * problem T^T H T x = T^T (r - H k) is solved by CG, preconditioned by AMG
+   * (or Jacobi for a diagonal H) built once from H itself, so that nothing is
+   * assembled again when the active set changes.
+   *
+   * The solver knows nothing about time: the time integrators use one
+   * instance with H = S for the displacement step and one with H = M for the
+   * L2 projection.
+   */
+  class ActiveSetSolver
+  {
+  public:
+    struct Parameters
+    {
+      unsigned int max_iterations        = 50;
+      double       linear_tolerance      = 1e-12;
+      unsigned int max_linear_iterations = 2000;
+      /// An initially penetrating configuration: rejected, or projected
+      /// onto K_h with a warning.
+      bool project_initial_penetration = false;
+
+      /// Declares subsection "Contact solver".
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /// How a solve ended. A failure is reported, never thrown: the time
+    /// step control decides what to do (retry with a smaller step, or stop
+    /// with a checkpoint and a message).
+    enum class Status
+    {
+      converged,
+      /// the active set still changed after the maximum number of iterations
+      active_set_not_converged,
+      /// CG did not reach its tolerance within its maximum iterations
+      linear_solver_failed
+    };
+
+    struct Result
+    {
+      Status       status            = Status::converged;
+      unsigned int iterations        = 0;
+      unsigned int linear_iterations = 0;
+      /// max_p |min(mu_p / c_p, g_p - (C v)_p)| at the last iterate (m)
+      double residual = 0.;
+      /// CG's residual when it failed
+      double linear_residual = 0.;
+      /// whether the iteration revisited an active set (and was damped)
+      bool cycled = false;
+
+      bool
+      converged() const
+      {
+        return status == Status::converged;
+      }
+
+      /// What went wrong, naming the parameter that limits it; empty when
+      /// converged.
+      std::string
+      failure() const;
+    };
+
+    ActiveSetSolver(const Parameters &parameters, const MPI_Comm comm);
+
+    /**
+     * Sets the partitioning, the mesh constraints (hanging nodes, Dirichlet;
+     * homogeneous) and the contact rows. Called once per mesh.
+     */
+    void
+    reinit(const IndexSet                  &locally_owned,
+           const IndexSet                  &locally_relevant,
+           const AffineConstraints<double> &mesh_constraints,
+           const ContactRows               &rows);
+
+    /**
+     * Sets H and builds the preconditioner once. If @p is_diagonal, H is a
+     * lumped (diagonal) matrix and Jacobi is used; with rows that only touch
+     * unconstrained slave DoFs the solve is then pointwise.
+     */
+    void
+    set_matrix(const MatrixType &H,
+               const bool        is_diagonal,
+               const MatrixType *preconditioner_matrix = nullptr);
+
+    /// The rigid translations (per component, locally owned DoFs), given to
+    /// AMG as near-null-space; call before set_matrix().
+    void
+    set_constant_modes(const std::vector<std::vector<bool>> &modes)
+    {
+      constant_modes = modes;
+    }
+
+    /**
+     * Solves the constrained problem for right-hand side @p r. On entry
+     * @p v is the initial guess, on exit the solution. @p active holds one
+     * flag per contact row: the warm start on entry, the final active set on
+     * exit. @p multipliers receives mu_p = nu_p . (r - H v)|_p per row
+     * (zero for inactive rows); both are the same on all ranks.
+     */
+    Result
+    solve(const VectorType    &r,
+          VectorType          &v,
+          std::vector<char>   &active,
+          std::vector<double> &multipliers) const;
+
+  private:
+    void
+    make_constraints(const std::vector<char>   &active,
+                     AffineConstraints<double> &constraints,
+                     const bool                 homogeneous) const;
+
+    /// y = T^T H T x on unconstrained entries, y_i = x_i on constrained ones.
+    void
+    vmult_condensed(const AffineConstraints<double> &homogeneous,
+                    VectorType                      &y,
+                    const VectorType                &x) const;
+
+    /// y = T^T z: adds constrained entries to the entries they depend on.
+    void
+    transpose_distribute(const AffineConstraints<double> &homogeneous,
+                         VectorType                      &z) const;
+
+    Result
+    solve_pointwise(const VectorType    &r,
+                    VectorType          &v,
+                    std::vector<char>   &active,
+                    std::vector<double> &multipliers) const;
+
+    const Parameters parameters;
+    const MPI_Comm   comm;
+
+    IndexSet                  locally_owned;
+    AffineConstraints<double> mesh_constraints;
+    const ContactRows        *rows = nullptr;
+    ContactRowOperator        row_operator;
+
+    const MatrixType *H             = nullptr;
+    bool              H_is_diagonal = false;
+    bool              pointwise     = false;
+    /// Diagonal of H (owned entries) and its value at each row's
+    /// eliminated DoF (the scaling c of the active-set criterion).
+    VectorType          diagonal;
+    std::vector<double> row_scaling;
+
+    /// Work vectors of the condensed operator, made once per mesh: T x, and
+    /// the additions of T^T to entries owned elsewhere (writable ghosts).
+    mutable VectorType                                    Tx;
+    mutable VectorType                                    additions;
+    std::vector<std::vector<bool>>                        constant_modes;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG>    amg;
+    std::unique_ptr<TrilinosWrappers::PreconditionJacobi> jacobi;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,102 @@
+#ifndef dyncontact_contact_contact_setup_h
+#define dyncontact_contact_contact_setup_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/fe/mapping.h>
+
+#include <dyncontact/contact/active_set_solver.h>
+#include <dyncontact/contact/contact_mapping.h>
+#include <dyncontact/contact/contact_rows.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/scenes/interface.h>
+
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  /**
+   * The contact set-up on the current mesh: the constraint rows c_p . v <=
+   * g_p of every slave node of the possible contact boundary, against the
+   * rigid obstacle or, for two-body pairs, through the mapping phi_h onto
+   * the master surface (the slave side chosen as the finer one unless the
+   * prm says otherwise), and the row operator that evaluates C v. A scene
+   * without contact gets no rows and no search.
+   */
+  template <int dim>
+  class ContactSetup
+  {
+  public:
+    /// Subsection "Contact": the prm's word on the scene's contact pairs.
+    struct Parameters
+    {
+      /// -1: the scene's choice (automatic), 0: side 1, 1: side 2.
+      int slave_side = -1;
+      /// In m; 0: the scene's default.
+      double search_radius = 0.;
+      /// From subsection "Contact solver": reject or project an initially
+      /// penetrating configuration.
+      bool project_initial_penetration = false;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    ContactSetup(const Parameters &parameters, const MPI_Comm comm);
+
+    /// Checks the parameters against the scene (before any mesh is built).
+    void
+    check(const Scene<dim> &scene) const;
+
+    /// The scene's contact pairs with the prm's slave side and radius.
+    std::vector<ContactPair>
+    contact_pairs(const Scene<dim> &scene) const;
+
+    /// Builds the rows on the current mesh.
+    void
+    setup(const Scene<dim>              &scene,
+          const SemiDiscreteSystem<dim> &system,
+          const Mapping<dim>            &mapping,
+          const ConditionalOStream      &pcout);
+
+    const ContactRows &
+    get_rows() const
+    {
+      return rows;
+    }
+
+    /// For each row, the scalar DoF of its slave node (for output).
+    const std::vector<types::global_dof_index> &
+    get_row_scalar_dofs() const
+    {
+      return row_scalar_dofs;
+    }
+
+    /// Evaluates C v and C v - g.
+    const ContactRowOperator &
+    get_row_operator() const
+    {
+      return row_operator;
+    }
+
+  private:
+    /// The contact faces with these boundary ids, from all ranks.
+    std::vector<MasterFace<dim>>
+    gather_faces(const SemiDiscreteSystem<dim>         &system,
+                 const std::vector<types::boundary_id> &ids) const;
+
+    const Parameters                     parameters;
+    const MPI_Comm                       comm;
+    ContactRows                          rows;
+    std::vector<types::global_dof_index> row_scalar_dofs;
+    ContactRowOperator                   row_operator;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,51 @@
+#ifndef dyncontact_core_parameters_h
+#define dyncontact_core_parameters_h
+
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  /**
+   * The parameters that belong to no single component: the dimension, the
+   * output directory, the global refinements of the scene's mesh, and the
+   * folder of the prm file. Every other group is declared and read by the
+   * component that uses it (Simulator::declare_parameters() collects them).
+   */
+  struct GlobalParameters
+  {
+    unsigned int dimension           = 2;
+    std::string  output_directory    = "results";
+    unsigned int initial_refinements = 0;
+    /// Folder of the prm file (relative file names in it refer to it).
+    std::string input_directory;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /// Declares every parameter of the program (all components and plugins).
+  void
+  declare_all_parameters(dealii::ParameterHandler &prm);
+
+  /**
+   * Stops with a clear message if the prm text @p text sets an entry in a
+   * subsection that does not declare it but another one does: an entry of
+   * the old flat layout (e.g. "Length" directly in subsection Scene, which
+   * moved to Scene/Bar impact, or "Slave side", which moved to Contact), or
+   * an entry of another scene. The message names the line and the
+   * subsections that declare the entry. Called before the text is parsed.
+   */
+  void
+  check_for_misplaced_entries(const std::string &text,
+                              const std::string &source);
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,32 @@
+#ifndef dyncontact_run_h
+#define dyncontact_run_h
+
+#include <deal.II/base/mpi.h>
+
+#include <dyncontact/core/statistics.h>
+
+#include <iosfwd>
+#include <string>
+
+namespace dyncontact
+{
+  /**
+   * Runs the simulation described by the parameter text @p prm_text (the
+   * contents of a .prm file) and returns the per-step statistics, the same
+   * on every rank. @p source names the text in error messages.
+   */
+  Statistics
+  run_simulation(const std::string &prm_text,
+                 const MPI_Comm     comm,
+                 const std::string &source = "<input>");
+
+  /// Prints every parameter with documentation, units and default.
+  void
+  print_parameters(std::ostream &out);
+
+  /// The program: dyncontact [--help] file.prm. Returns the exit status.
+  int
+  main_program(int argc, char **argv);
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,124 @@
+#ifndef dyncontact_core_simulation_control_h
+#define dyncontact_core_simulation_control_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <map>
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  /**
+   * The one owner of time (as lethe's SimulationControl): the time step tau,
+   * the end time, the step number and the time t_n = t_base + k tau (so that
+   * times do not accumulate round-off), the moments of VTU output and of
+   * checkpoints, and the retry policy of a failed step (tau/2, down to
+   * tau/1024, when 'Time step adaptation' is on). The static problem is one
+   * step to the end time.
+   */
+  class SimulationControl
+  {
+  public:
+    /// Declares Time integration/Time step, End time, Time step
+    /// adaptation; Output/Output interval; Checkpointing/Interval in steps,
+    /// Interval in minutes.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    SimulationControl(const MPI_Comm comm);
+
+    /// Reads and checks the parameters; @p is_static: one step, to End time.
+    void
+    parse_parameters(ParameterHandler &prm, const bool is_static);
+
+    unsigned int
+    get_step() const
+    {
+      return step;
+    }
+
+    double
+    get_time() const
+    {
+      return time;
+    }
+
+    /// The time step in use.
+    double
+    get_timestep() const
+    {
+      return tau;
+    }
+
+    double
+    get_end_time() const
+    {
+      return end_time;
+    }
+
+    /// Whether another step is to be taken.
+    bool
+    keep_going() const;
+
+    /// After a successful step: t_{n+1}.
+    void
+    advance();
+
+    /// Whether VTU output is due after this step.
+    bool
+    output_due() const;
+
+    /// Moves the next output time on by one interval.
+    void
+    output_written();
+
+    /// Whether a checkpoint is due after this step (the same on all ranks).
+    bool
+    checkpoint_due() const;
+
+    void
+    checkpoint_written();
+
+    /// A step failed: with 'Time step adaptation', halve tau (down to
+    /// tau/1024) and return true; otherwise return false.
+    bool
+    reduce_timestep();
+
+    /// The state a resumed run needs (step, time, tau, next output).
+    void
+    save(std::map<std::string, std::string> &state) const;
+    void
+    load(const std::map<std::string, std::string> &state);
+
+  private:
+    const MPI_Comm comm;
+
+    // parameters
+    double       time_step            = 0.0125;
+    double       end_time             = 2.5;
+    bool         time_step_adaptation = false;
+    double       output_interval      = 0.05;
+    unsigned int checkpoint_steps     = 0;
+    double       checkpoint_minutes   = 0.;
+    bool         is_static            = false;
+
+    // state
+    double       tau         = 0.0125;
+    unsigned int step        = 0;
+    double       time        = 0.;
+    double       time_base   = 0.;
+    unsigned int steps_since = 0;
+    double       next_output = 0.05;
+    Timer        since_checkpoint;
+  };
+} // namespace dyncontact
+
+#endif

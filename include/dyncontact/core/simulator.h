@@ -1,0 +1,125 @@
+#ifndef dyncontact_core_simulator_h
+#define dyncontact_core_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <dyncontact/contact/active_set_solver.h>
+#include <dyncontact/core/parameters.h>
+#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/core/simulator_access.h>
+#include <dyncontact/core/statistics.h>
+#include <dyncontact/output/checkpoint.h>
+#include <dyncontact/time_stepping/integrators.h>
+
+#include <memory>
+#include <string>
+
+namespace dyncontact
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    class Manager;
+  }
+  template <int dim>
+  class VtuWriter;
+
+  /**
+   * The time loop, and nothing else: it builds the scene's mesh, asks the
+   * components to set themselves up on it, and steps. What happens in a
+   * step, to the statistics, the output, the mesh and the checkpoints is
+   * each one component's job:
+   *
+   * - SimulationControl: time, tau, output and checkpoint moments, retries;
+   * - SemiDiscreteSystem: DoFs, constraints, M, A, B, f, w, state transfer;
+   * - ContactSetup: the constraint rows (obstacle or phi_h);
+   * - TimeIntegrator: the scheme (N-CI, N-CS, N-CS++, static) and its
+   *   active-set solvers;
+   * - Postprocess::Manager: the statistics (plugins);
+   * - MeshAdaptor: when and where the mesh adapts (criteria are plugins);
+   * - VtuWriter, ReferenceStates, Checkpoints: output.
+   *
+   * Components read the state through SimulatorAccess.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    /// Declares the parameters of every component and plugin.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads every component's parameters from @p prm (already parsed);
+    /// relative file names refer to @p input_directory.
+    Simulator(ParameterHandler  &prm,
+              const std::string &input_directory,
+              const MPI_Comm     comm);
+
+    ~Simulator();
+
+    /// Runs the whole simulation; returns the statistics (on all ranks).
+    Statistics
+    run();
+
+  private:
+    void
+    run_time_loop();
+    void
+    build_mesh();
+    /// DoFs, matrices and contact rows on the current mesh.
+    void
+    setup_discretization();
+    void
+    make_integrator();
+    /// The initial state, its statistics row and output (a new run).
+    void
+    start();
+    /// Everything from the last good checkpoint (a resumed run).
+    void
+    resume();
+    /// One statistics row (and a reference state, if due).
+    void
+    record_statistics();
+    void
+    refine_mesh();
+    std::string
+    write_checkpoint();
+    /// A step failed and cannot be retried: checkpoint the last good state
+    /// and stop with a message.
+    [[noreturn]] void
+    stop_after_failed_step(const bool finite);
+
+    GlobalParameters             parameters;
+    const MPI_Comm               comm;
+    ConditionalOStream           pcout;
+    std::unique_ptr<TimerOutput> timer;
+
+    SimulationControl           control;
+    const Scheme               &scheme;
+    ActiveSetSolver::Parameters solver_parameters;
+    std::unique_ptr<Scene<dim>> scene;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    MappingQ1<dim>                            mapping;
+    std::unique_ptr<SemiDiscreteSystem<dim>>  system;
+    std::unique_ptr<ContactSetup<dim>>        contact;
+    std::unique_ptr<TimeIntegrator>           integrator;
+
+    VectorType u, udot, u_old, udot_old;
+    StepReport report;
+    double     step_wall_time = 0.;
+
+    std::unique_ptr<MeshAdaptor<dim>>          mesh_adaptor;
+    std::unique_ptr<Postprocess::Manager<dim>> postprocessors;
+    std::unique_ptr<VtuWriter<dim>>            vtu_writer;
+    std::unique_ptr<ReferenceStates<dim>>      reference_states;
+    Checkpoints                                checkpoints;
+
+    friend class SimulatorAccess<dim>;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,254 @@
+#ifndef dyncontact_discretization_semi_discrete_system_h
+#define dyncontact_discretization_semi_discrete_system_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dyncontact/scenes/interface.h>
+
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  using VectorType = TrilinosWrappers::MPI::Vector;
+  using MatrixType = TrilinosWrappers::SparseMatrix;
+
+  /// The matrices and the load of the semi-discrete problem that a time
+  /// integrator needs. B is nullptr for an elastic body.
+  struct SystemMatrices
+  {
+    const MatrixType *M           = nullptr;
+    const MatrixType *A           = nullptr;
+    const MatrixType *B           = nullptr;
+    const VectorType *f           = nullptr;
+    bool              lumped_mass = true;
+  };
+
+  /**
+   * The space discretisation of the scene on the current mesh: vector-valued
+   * FE_Q(p)^dim with its DoFs, the hanging-node and homogeneous Dirichlet
+   * constraints, the mass matrix M (consistent or lumped), the elastic and
+   * viscous stiffness matrices A and B (B only for a viscous scene), the
+   * load f, the boundary weights w_p of the contact boundaries, and the
+   * transfer of a state (u, udot) to a new mesh or to a checkpoint. Rebuilt
+   * (setup(), assemble()) whenever the mesh changes.
+   */
+  template <int dim>
+  class SemiDiscreteSystem
+  {
+  public:
+    struct Parameters
+    {
+      unsigned int degree      = 1;
+      bool         lumped_mass = true;
+
+      /// Declares "Polynomial degree" and "Time integration/Mass matrix".
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    SemiDiscreteSystem(const Parameters   &parameters,
+                       const Mapping<dim> &mapping,
+                       const MPI_Comm      comm);
+
+    /// DoFs, constraints, sparsity patterns and vectors on the current mesh
+    /// (the first call attaches the DoF handlers to @p triangulation).
+    void
+    setup(const parallel::distributed::Triangulation<dim> &triangulation,
+          const Scene<dim>                                &scene);
+
+    /// M, A, B, f and the boundary weights w; checks that no cell is
+    /// inverted.
+    void
+    assemble(const Scene<dim> &scene);
+
+    /// The scene's initial displacement and velocity, nodal interpolation
+    /// body by body; hanging nodes follow their parents, Dirichlet nodes are
+    /// fixed.
+    void
+    interpolate_initial_values(const Scene<dim> &scene,
+                               VectorType       &u,
+                               VectorType       &udot) const;
+
+    /// An owned vector of this system.
+    void
+    reinit_vector(VectorType &v) const;
+
+    /// E_kin = 1/2 udot^T M udot and E_el = 1/2 u^T A u - f^T u;
+    /// @p M_udot receives M udot.
+    std::pair<double, double>
+    energies(const VectorType &u,
+             const VectorType &udot,
+             VectorType       &M_udot) const;
+
+    /// E_kin + E_el.
+    double
+    total_energy(const VectorType &u, const VectorType &udot) const;
+
+    /// Before the triangulation is refined: remember (u, udot).
+    void
+    prepare_for_refinement(const VectorType &u, const VectorType &udot);
+    /// After refinement and setup(): (u, udot) on the new mesh.
+    void
+    interpolate_after_refinement(VectorType &u, VectorType &udot);
+    /// Attaches (u, udot) to the triangulation for its save().
+    void
+    prepare_for_serialization(const VectorType &u, const VectorType &udot);
+    /// After the triangulation's load() and setup(): (u, udot).
+    void
+    deserialize(VectorType &u, VectorType &udot);
+
+    SystemMatrices
+    matrices() const;
+
+    const FESystem<dim> &
+    get_fe() const
+    {
+      return fe;
+    }
+    const FE_Q<dim> &
+    get_scalar_fe() const
+    {
+      return scalar_fe;
+    }
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    /// Scalar FE_Q(p) on the same mesh, for nodal contact fields.
+    const DoFHandler<dim> &
+    get_scalar_dof_handler() const
+    {
+      return scalar_dof_handler;
+    }
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return locally_owned;
+    }
+    const IndexSet &
+    locally_relevant_dofs() const
+    {
+      return locally_relevant;
+    }
+    const IndexSet &
+    scalar_locally_owned_dofs() const
+    {
+      return scalar_locally_owned;
+    }
+    const IndexSet &
+    scalar_locally_relevant_dofs() const
+    {
+      return scalar_locally_relevant;
+    }
+    /// Hanging nodes and homogeneous Dirichlet data.
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+    const MatrixType &
+    get_mass_matrix() const
+    {
+      return mass_matrix;
+    }
+    const MatrixType &
+    get_stiffness_matrix() const
+    {
+      return stiffness_matrix;
+    }
+    bool
+    has_viscous_matrix() const
+    {
+      return viscous;
+    }
+    const MatrixType &
+    get_viscous_matrix() const
+    {
+      return viscous_matrix;
+    }
+    const VectorType &
+    get_load() const
+    {
+      return load;
+    }
+    /// w_p = int_{Gamma_C} psi_p ds at every DoF of the contact boundaries.
+    const VectorType &
+    get_boundary_weights() const
+    {
+      return boundary_weights;
+    }
+    /// Locally owned DoFs of each body and displacement component.
+    const std::vector<std::vector<IndexSet>> &
+    get_body_component_dofs() const
+    {
+      return body_component_dofs;
+    }
+    /// Rigid translations, the near-null-space for AMG.
+    const std::vector<std::vector<bool>> &
+    get_constant_modes() const
+    {
+      return constant_modes;
+    }
+    /// Component-0 system DoF -> scalar DoF, for the nodes owned here.
+    const std::map<types::global_dof_index, types::global_dof_index> &
+    get_owned_system0_to_scalar() const
+    {
+      return owned_system0_to_scalar;
+    }
+
+  private:
+    const Parameters    parameters;
+    const Mapping<dim> &mapping;
+    const MPI_Comm      comm;
+    bool                attached = false;
+    bool                viscous  = false;
+
+    FESystem<dim>   fe;
+    DoFHandler<dim> dof_handler;
+    FE_Q<dim>       scalar_fe;
+    DoFHandler<dim> scalar_dof_handler;
+
+    IndexSet                           locally_owned;
+    IndexSet                           locally_relevant;
+    IndexSet                           scalar_locally_owned;
+    IndexSet                           scalar_locally_relevant;
+    AffineConstraints<double>          constraints;
+    std::vector<std::vector<IndexSet>> body_component_dofs;
+    std::vector<std::vector<bool>>     constant_modes;
+    std::map<types::global_dof_index, types::global_dof_index>
+      owned_system0_to_scalar;
+
+    MatrixType mass_matrix;
+    MatrixType stiffness_matrix;
+    MatrixType viscous_matrix;
+    VectorType load;
+    VectorType boundary_weights;
+
+    /// A state in transfer (refinement or checkpoint) and its ghosted copy.
+    std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
+                            transfer;
+    std::vector<VectorType> transferred;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,69 @@
+#ifndef dyncontact_mesh_refinement_interface_h
+#define dyncontact_mesh_refinement_interface_h
+
+#include <deal.II/lac/vector.h>
+
+#include <dyncontact/core/plugins.h>
+#include <dyncontact/core/simulator_access.h>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  namespace MeshRefinement
+  {
+    /**
+     * A refinement criterion (as ASPECT's mesh refinement plugins): it adds
+     * indicators per active cell, from which the top and bottom fractions
+     * of the cells are refined and coarsened, and/or it flags cells that
+     * must be refined whatever the indicators say. A new criterion is one
+     * file with its class and the line
+     * DYNCONTACT_REGISTER_REFINEMENT_CRITERION(Class, "name", position,
+     * "what"); the name is what "Mesh refinement/Criteria" lists.
+     */
+    template <int dim>
+    class Interface : public SimulatorAccess<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+
+      virtual void
+      parse_parameters(ParameterHandler &)
+      {}
+
+      /// Adds this criterion's indicators, scaled to maximum 1 over all
+      /// ranks, to @p indicators (one per active cell); none by default.
+      virtual void
+      execute(Vector<float> &indicators) const
+      {
+        (void)indicators;
+      }
+
+      /// Sets the refine flag of cells that must be refined (and clears
+      /// their coarsen flag); none by default.
+      virtual void
+      tag_additional_cells() const
+      {}
+    };
+  } // namespace MeshRefinement
+
+  extern template class PluginRegistry<MeshRefinement::Interface>;
+} // namespace dyncontact
+
+/// Registers a refinement criterion; @p position orders the criteria.
+#define DYNCONTACT_REGISTER_REFINEMENT_CRITERION(classname,         \
+                                                 name,              \
+                                                 position,          \
+                                                 description)       \
+  DYNCONTACT_REGISTER_PLUGIN(dyncontact::MeshRefinement::Interface, \
+                             classname,                             \
+                             name,                                  \
+                             position,                              \
+                             description)
+
+#endif

@@ -1,0 +1,132 @@
+#ifndef dyncontact_mesh_refinement_mesh_adaptor_h
+#define dyncontact_mesh_refinement_mesh_adaptor_h
+
+#include <dyncontact/core/simulator_access.h>
+#include <dyncontact/mesh_refinement/interface.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  /**
+   * When and where the mesh adapts during the dynamics (subsection "Mesh
+   * refinement"): every "Refinement interval" steps the cells are marked by
+   * the chosen criteria (plugins: the indicators of all criteria are added,
+   * the top fraction refined and the bottom fraction coarsened, then each
+   * criterion flags the cells it insists on), within the level bounds.
+   * Before t = 0 the contact zone is refined "Initial contact refinements"
+   * times. The adaptor also keeps the record of what the transfers of the
+   * state did (energy change, violation of K_h) since the last statistics
+   * row.
+   */
+  template <int dim>
+  class MeshAdaptor : public SimulatorAccess<dim>
+  {
+  public:
+    /// Declares subsection "Mesh refinement" with every criterion's entries.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    void
+    initialize_simulator(const Simulator<dim> &simulator) override;
+
+    /// Whether the mesh changes at all (during the run or before t = 0).
+    bool
+    is_adaptive() const
+    {
+      return interval > 0 || initial_refinements > 0;
+    }
+
+    /// Whether the mesh adapts during the run.
+    bool
+    adapts_during_run() const
+    {
+      return interval > 0;
+    }
+
+    /// Whether the mesh adapts after this step.
+    bool
+    refinement_due(const unsigned int step) const
+    {
+      return interval > 0 && step % interval == 0;
+    }
+
+    unsigned int
+    n_initial_refinements() const
+    {
+      return initial_refinements;
+    }
+
+    unsigned int
+    get_max_level() const
+    {
+      return max_level;
+    }
+
+    /// Flags the cells of @p triangulation by the criteria (collective).
+    void
+    mark_cells(parallel::distributed::Triangulation<dim> &triangulation) const;
+
+    /// Flags the cells of the contact zone of the current state (the
+    /// refinement before t = 0).
+    void
+    mark_contact_zone() const;
+
+    /// A transfer changed the energy by @p energy_change (J) and left a
+    /// violation @p penetration (m) of K_h before the projection.
+    void
+    record_transfer(const double energy_change, const double penetration);
+
+    /// Energy change of the transfers since the last row (J).
+    double
+    get_energy_transfer() const
+    {
+      return energy_transfer;
+    }
+
+    /// Largest violation of K_h they left (m).
+    double
+    get_transfer_penetration() const
+    {
+      return transfer_penetration;
+    }
+
+    /// The statistics row has been written: start a new record.
+    void
+    start_new_row();
+
+    void
+    save(std::map<std::string, std::string> &state) const;
+    void
+    load(const std::map<std::string, std::string> &state);
+
+  private:
+    unsigned int             interval            = 0;
+    unsigned int             min_level           = 0;
+    unsigned int             max_level           = 10;
+    double                   refine_fraction     = 0.2;
+    double                   coarsen_fraction    = 0.3;
+    unsigned int             initial_refinements = 0;
+    std::vector<std::string> criterion_names;
+
+    std::vector<std::unique_ptr<MeshRefinement::Interface<dim>>> criteria;
+    /// The contact-zone criterion of the refinement before t = 0.
+    std::unique_ptr<MeshRefinement::Interface<dim>> contact_zone;
+
+    double energy_transfer      = 0.;
+    double transfer_penetration = 0.;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,81 @@
+#ifndef dyncontact_output_checkpoint_h
+#define dyncontact_output_checkpoint_h
+
+#include <deal.II/base/mpi.h>
+
+#include <map>
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  /**
+   * Checkpoints in <Output directory>/checkpoints: each is written to a new
+   * folder step_NNNNNNN (the mesh with u and udot by p4est's save, written
+   * by the simulator into mesh_file(); and state.txt with every component's
+   * state as key/value pairs) and only then marked as the last good one by
+   * an atomic rename of checkpoints/last, so a crash while writing leaves
+   * the previous checkpoint usable; the one before it is kept too. A resumed
+   * run must agree with the checkpoint in its critical parameters (all but
+   * End time, Output directory, Output, Checkpointing, Time step adaptation
+   * and the solver's iteration limits).
+   */
+  class Checkpoints
+  {
+  public:
+    /// Declares "Checkpointing/Resume".
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads Resume and records the critical parameters of @p prm.
+    void
+    parse_parameters(ParameterHandler  &prm,
+                     const std::string &output_directory,
+                     const MPI_Comm     comm);
+
+    bool
+    resume() const
+    {
+      return resume_run;
+    }
+
+    /// The folder of a new checkpoint for @p step (created, empty).
+    std::string
+    begin(const unsigned int step) const;
+
+    /// The file (prefix) of the mesh in checkpoint folder @p directory.
+    static std::string
+    mesh_file(const std::string &directory)
+    {
+      return directory + "/mesh";
+    }
+
+    /// Writes @p state into @p directory and marks the checkpoint as the
+    /// last good one (collective).
+    void
+    finish(const std::string                        &directory,
+           const std::map<std::string, std::string> &state) const;
+
+    /// The last good checkpoint's folder; its state after checking the
+    /// critical parameters against this run's.
+    std::string
+    last_directory() const;
+    std::map<std::string, std::string>
+    read_state(const std::string &directory) const;
+
+  private:
+    std::string root;
+    MPI_Comm    comm       = MPI_COMM_SELF;
+    bool        resume_run = false;
+    /// The parameters a resumed run must share with its checkpoint, as text.
+    std::string critical_parameters;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,67 @@
+#ifndef dyncontact_output_reference_states_h
+#define dyncontact_output_reference_states_h
+
+#include <dyncontact/core/simulator_access.h>
+
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  /**
+   * Reference states (subsection "Reference solution"): a reference run
+   * (same mesh, much smaller time step) writes u and udot at fixed times;
+   * another run reads them at the same times and computes the error in the
+   * physical energy norm on the same mesh, ||(e, edot)||_E^2 = 1/2 edot^T M
+   * edot + 1/2 e^T A e (eqs. 22-24, without the viscous time integral).
+   */
+  template <int dim>
+  class ReferenceStates : public SimulatorAccess<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether this run writes reference states.
+    bool
+    writes() const
+    {
+      return write_states;
+    }
+
+    /// Whether this run compares with reference states.
+    bool
+    compares() const
+    {
+      return compare_states;
+    }
+
+    /// Writes the current state if @p time is a reference time.
+    void
+    write(const double time) const;
+
+    /// The error against the reference state at @p time, NaN if @p time is
+    /// no reference time.
+    double
+    error(const double time) const;
+
+  private:
+    /// The index of the reference time @p time, or -1.
+    int
+    reference_index(const double time) const;
+
+    bool        write_states   = false;
+    bool        compare_states = false;
+    std::string directory      = "reference";
+    double      interval       = 0.1;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,58 @@
+#ifndef dyncontact_output_vtu_writer_h
+#define dyncontact_output_vtu_writer_h
+
+#include <dyncontact/core/simulator_access.h>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  /**
+   * VTU output for ParaView: solution_NNNNN.pvtu (one .vtu per rank) with
+   * displacement, velocity, von Mises stress, the nodal contact fields
+   * (pressure on both sides, active and critical sets, gap), subdomain and
+   * refinement level, and solution.pvd listing every output with its time.
+   */
+  template <int dim>
+  class VtuWriter : public SimulatorAccess<dim>
+  {
+  public:
+    /// Declares "Output/Write vtu".
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool
+    is_enabled() const
+    {
+      return write_vtu;
+    }
+
+    /// Writes the current state at @p time (collective).
+    void
+    write(const double time);
+
+    /// The output counter and the .pvd history (checkpoints).
+    void
+    save(std::map<std::string, std::string> &state) const;
+    void
+    load(const std::map<std::string, std::string> &state);
+
+  private:
+    bool                                        write_vtu      = true;
+    unsigned int                                output_counter = 0;
+    std::vector<std::pair<double, std::string>> pvd_records;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,132 @@
+#ifndef dyncontact_postprocess_interface_h
+#define dyncontact_postprocess_interface_h
+
+#include <dyncontact/core/plugins.h>
+#include <dyncontact/core/simulator_access.h>
+#include <dyncontact/core/statistics.h>
+
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  namespace Postprocess
+  {
+    /**
+     * One statistic of statistics.tsv (as ASPECT's postprocessors): it
+     * declares its columns and fills them after every step. It runs only
+     * where it applies (e.g. no error norm without an exact solution). A new
+     * statistic is one file with its class and the line
+     * DYNCONTACT_REGISTER_POSTPROCESSOR(Class, "name", position, "what").
+     */
+    template <int dim>
+    class Interface : public SimulatorAccess<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+
+      virtual void
+      parse_parameters(ParameterHandler &)
+      {}
+
+      /// Whether the statistic applies to this run (asked once, before the
+      /// first step; the scene and the parameters are known then).
+      virtual bool
+      applies() const
+      {
+        return true;
+      }
+
+      /// The names of its columns.
+      virtual std::vector<std::string>
+      columns() const = 0;
+
+      /// Appends one value per column for the current step to @p row.
+      virtual void
+      execute(std::vector<double> &row) = 0;
+
+      /// Accumulators a resumed run needs (checkpoints).
+      virtual void
+      save(std::map<std::string, std::string> &) const
+      {}
+      virtual void
+      load(const std::map<std::string, std::string> &)
+      {}
+    };
+
+
+
+    /**
+     * All statistics that apply, in the order of their positions: the table
+     * (step, time, then each postprocessor's columns) and statistics.tsv,
+     * written and flushed after every step on rank 0.
+     */
+    template <int dim>
+    class Manager : public SimulatorAccess<dim>
+    {
+    public:
+      /// Declares the parameters of every postprocessor.
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /// Creates every postprocessor and reads its parameters.
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// Gives every postprocessor the simulator, keeps those that apply
+      /// and sets the columns.
+      void
+      initialize_simulator(const Simulator<dim> &simulator) override;
+
+      /// Starts statistics.tsv with its header and the rows so far.
+      void
+      open_file(const std::string &file);
+
+      /// One row for the current step: step, time, every postprocessor.
+      void
+      execute();
+
+      const Statistics &
+      get_statistics() const
+      {
+        return statistics;
+      }
+
+      /// The rows so far and every postprocessor's accumulators.
+      void
+      save(std::map<std::string, std::string> &state) const;
+      void
+      load(const std::map<std::string, std::string> &state);
+
+    private:
+      std::vector<std::unique_ptr<Interface<dim>>> postprocessors;
+      Statistics                                   statistics;
+      std::ofstream                                file;
+    };
+  } // namespace Postprocess
+
+  extern template class PluginRegistry<Postprocess::Interface>;
+} // namespace dyncontact
+
+/// Registers a postprocessor; @p position orders the columns.
+#define DYNCONTACT_REGISTER_POSTPROCESSOR(classname,             \
+                                          name,                  \
+                                          position,              \
+                                          description)           \
+  DYNCONTACT_REGISTER_PLUGIN(dyncontact::Postprocess::Interface, \
+                             classname,                          \
+                             name,                               \
+                             position,                           \
+                             description)
+
+#endif

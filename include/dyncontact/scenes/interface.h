@@ -1,0 +1,265 @@
+#ifndef dyncontact_scenes_interface_h
+#define dyncontact_scenes_interface_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <dyncontact/core/plugins.h>
+#include <dyncontact/discretization/material.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+  template <int dim, int spacedim>
+  class Triangulation;
+} // namespace dealii
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  /**
+   * A rigid obstacle: the half-space {x : (x - point) . normal <= 0}, with
+   * @p normal the unit normal pointing out of the obstacle into free space.
+   * For a slave node x_p it gives nu_p = -normal and g_p = (x_p - point) .
+   * normal (the paper's eqs. 2-3 with phi(x) the closest obstacle point).
+   */
+  template <int dim>
+  struct RigidObstacle
+  {
+    Point<dim>     point;
+    Tensor<1, dim> normal;
+  };
+
+  /// Homogeneous Dirichlet data on one boundary id, for some components.
+  struct DirichletBoundary
+  {
+    types::boundary_id id;
+    /// Which displacement components are fixed (only the first dim count).
+    std::array<bool, 3> components{{true, true, true}};
+  };
+
+  /**
+   * A two-body contact pair: the boundary ids of the possible contact
+   * boundaries of the two sides, which side is the slave, and how far from a
+   * slave node the contact search looks for the master surface. The scene
+   * gives its defaults; subsection "Contact" may override them.
+   */
+  struct ContactPair
+  {
+    std::vector<types::boundary_id> first_side;
+    std::vector<types::boundary_id> second_side;
+    /// -1: automatic (the finer side), 0: the first side, 1: the second side.
+    int slave_side = -1;
+    /// In m; slave nodes farther than this from the master get no row; 0:
+    /// the scene has no default.
+    double search_radius = 0.;
+  };
+
+  template <int dim>
+  class Scene;
+
+  template <int dim>
+  std::unique_ptr<Scene<dim>>
+  create_scene(ParameterHandler &prm, const std::string &input_directory);
+
+  /// The exact solution at one point and time, where a scene knows it.
+  template <int dim>
+  struct ExactValues
+  {
+    Tensor<1, dim> displacement;
+    Tensor<1, dim> velocity;
+    Tensor<2, dim> displacement_gradient;
+  };
+
+  /**
+   * A scene decides what exists: the mesh with its boundary ids, the
+   * materials, loads, initial data, the obstacle and, if known, the exact
+   * solution. Nothing is assembled or searched that the scene does not ask
+   * for.
+   *
+   * Scenes are plugins: a new scene is one file with its class and the line
+   * DYNCONTACT_REGISTER_SCENE(Class, "name", "description"). Its parameters
+   * live in its own subsection "Scene/<Name>" (declared by its static
+   * declare_parameters(), read by parse_parameters()), so no scene reads
+   * another's entries.
+   */
+  template <int dim>
+  class Scene
+  {
+  public:
+    virtual ~Scene() = default;
+
+    /// Declares the scene's subsection; nothing by default.
+    static void
+    declare_parameters(ParameterHandler &)
+    {}
+
+    /// Reads and checks the scene's subsection "Scene/<Name>".
+    virtual void
+    parse_parameters(ParameterHandler &prm) = 0;
+
+    /// The name under which the scene is registered.
+    const std::string &
+    name() const
+    {
+      return scene_name;
+    }
+
+    /// The coarse mesh with boundary ids (before global refinement). Each
+    /// cell's material id is the index of its body.
+    virtual void
+    create_coarse_mesh(Triangulation<dim, dim> &triangulation) const = 0;
+
+    /// Local refinement after the global refinements (e.g. towards the
+    /// contact zone); by default none.
+    virtual void
+    refine_initial_mesh(Triangulation<dim, dim> &) const
+    {}
+
+    /// Number of bodies (cells have material id 0 .. n_bodies()-1).
+    virtual unsigned int
+    n_bodies() const
+    {
+      return 1;
+    }
+
+    /// The material subsection of each body: by default "Material" and
+    /// "Material of body 2".
+    virtual std::vector<std::string>
+    material_subsections() const;
+
+    const Material &
+    material(const unsigned int body) const
+    {
+      return materials[body];
+    }
+
+    /// Boundary ids that touch the rigid obstacle, if there is one.
+    virtual std::vector<types::boundary_id>
+    contact_boundary_ids() const
+    {
+      return {};
+    }
+
+    /// Two-body contact pairs; none by default.
+    virtual std::vector<ContactPair>
+    contact_pairs() const
+    {
+      return {};
+    }
+
+    /// Boundaries with homogeneous Dirichlet data.
+    virtual std::vector<DirichletBoundary>
+    dirichlet_boundaries() const
+    {
+      return {};
+    }
+
+    /// Constant Neumann tractions (Pa) per boundary id.
+    virtual std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+    neumann_tractions() const
+    {
+      return {};
+    }
+
+    /// Constant body force density (N/m^3) in the given body.
+    virtual Tensor<1, dim>
+    body_force(const unsigned int /*body*/) const
+    {
+      return Tensor<1, dim>();
+    }
+
+    /// Initial displacement at x in the given body.
+    virtual Tensor<1, dim>
+    initial_displacement(const Point<dim> &, const unsigned int /*body*/) const
+    {
+      return Tensor<1, dim>();
+    }
+
+    /// Initial velocity at x in the given body.
+    virtual Tensor<1, dim>
+    initial_velocity(const Point<dim> &x, const unsigned int body) const = 0;
+
+    /// The rigid obstacle, if the scene has one.
+    virtual std::optional<RigidObstacle<dim>>
+    obstacle() const
+    {
+      return {};
+    }
+
+    virtual bool
+    has_exact_solution() const
+    {
+      return false;
+    }
+
+    virtual ExactValues<dim>
+    exact_solution(const Point<dim> &, const double) const
+    {
+      return {};
+    }
+
+    /// Boundary ids of every possible contact boundary (obstacle and pairs).
+    std::vector<types::boundary_id>
+    all_contact_boundary_ids() const;
+
+    /// Whether the scene has any contact (an obstacle or a pair).
+    bool
+    has_contact() const;
+
+    /// Whether any body is viscous (else no viscous matrix is assembled).
+    bool
+    is_viscous() const;
+
+  protected:
+    /// The folder of the prm file: relative file names refer to it.
+    std::string input_directory;
+
+  private:
+    std::string           scene_name;
+    std::vector<Material> materials;
+
+    friend std::unique_ptr<Scene<dim>>
+    create_scene<dim>(ParameterHandler  &prm,
+                      const std::string &input_directory);
+  };
+
+  extern template class PluginRegistry<Scene>;
+
+  /// Declares subsection "Scene" with "Name" and every scene's subsection.
+  void
+  declare_scene_parameters(ParameterHandler &prm);
+
+  /// Creates the scene named in "Scene/Name", reads its parameters and the
+  /// materials of its bodies; relative file names in the scene's parameters
+  /// are relative to @p input_directory (the prm file's folder).
+  template <int dim>
+  std::unique_ptr<Scene<dim>>
+  create_scene(ParameterHandler &prm, const std::string &input_directory);
+
+  /**
+   * Builds one coarse mesh from several coarse meshes (the bodies) without
+   * merging any vertices, so that bodies touching at t = 0 stay separate.
+   * Cell material ids become the index of the body; boundary and manifold
+   * ids are kept.
+   */
+  template <int dim>
+  void
+  merge_bodies(const std::vector<const Triangulation<dim, dim> *> &bodies,
+               Triangulation<dim, dim>                            &result);
+} // namespace dyncontact
+
+/// Registers a scene (see Scene).
+#define DYNCONTACT_REGISTER_SCENE(classname, name, description) \
+  DYNCONTACT_REGISTER_PLUGIN(dyncontact::Scene, classname, name, 0, description)
+
+#endif

@@ -1,0 +1,274 @@
+#ifndef dyncontact_time_stepping_integrators_h
+#define dyncontact_time_stepping_integrators_h
+
+#include <dyncontact/contact/active_set_solver.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  /// What one step reports to the diagnostics and to the step control.
+  struct StepReport
+  {
+    ActiveSetSolver::Result displacement_solve;
+    ActiveSetSolver::Result projection_solve;
+    /// Active rows and multipliers of the displacement step (12d)/(11c).
+    std::vector<char>   active;
+    std::vector<double> multipliers;
+    /// Rows where the L2 projection was active (12f; for N-CS its predictor).
+    std::vector<char> projection_active;
+    /// Rows of Gamma*_{h,C} (eq. 40): projection active, displacement not.
+    std::vector<char> critical;
+    /// ||udot^{n+1} - udot_pred^{n+1}||_M (N-CS++), resp. the size of the
+    /// predictor's correction for N-CS; zero for N-CI.
+    double velocity_correction = 0.;
+
+    /// Whether both constrained problems of the step converged.
+    bool
+    converged() const
+    {
+      return displacement_solve.converged() && projection_solve.converged();
+    }
+
+    /// What failed (empty if the step converged).
+    std::string
+    failure() const
+    {
+      return displacement_solve.converged() ? projection_solve.failure() :
+                                              displacement_solve.failure();
+    }
+  };
+
+  /**
+   * The operators a time step is written with (ALGORITHMS.md section 4), on
+   * the algebraic level:
+   *   S = M + tau^2/4 A + tau/2 B      (static: S = A),
+   *   r(w) = M w - tau^2/4 A u^n + tau/2 B u^n + tau^2/2 f,
+   *   the displacement step argmin_{Cv<=g} 1/2 v^T S v - r^T v,
+   *   P(w) = argmin_{Cv<=g} 1/2 (v-w)^T M (v-w)   (eq. 15).
+   * Each constrained problem is solved by its own active-set solver, warm
+   * started from its last active set.
+   */
+  class StepOperators
+  {
+  public:
+    StepOperators(const bool                            is_static,
+                  const double                          tau,
+                  const SystemMatrices                 &system,
+                  const ActiveSetSolver::Parameters    &solver_parameters,
+                  const IndexSet                       &locally_owned,
+                  const IndexSet                       &locally_relevant,
+                  const AffineConstraints<double>      &mesh_constraints,
+                  const ContactRows                    &rows,
+                  const std::vector<std::vector<bool>> &constant_modes,
+                  const MPI_Comm                        comm);
+
+    double
+    tau() const
+    {
+      return time_step;
+    }
+
+    /// The load f.
+    const VectorType &
+    load() const
+    {
+      return *system.f;
+    }
+
+    /// r = r(w) for the step from u = u^n.
+    void
+    rhs(const VectorType &w, const VectorType &u, VectorType &r) const;
+
+    /// v = argmin_{Cv<=g} 1/2 v^T S v - r^T v (v is the initial guess);
+    /// fills the report's displacement solve, active set and multipliers.
+    void
+    solve_displacement(const VectorType &r, VectorType &v, StepReport &report);
+
+    /// v = P(w) (the initial guess is w); fills the report's projection.
+    void
+    project(const VectorType &w, VectorType &v, StepReport &report);
+
+    /// sqrt(x^T M x).
+    double
+    mass_norm(const VectorType &x) const;
+
+    std::size_t
+    n_rows() const
+    {
+      return rows->size();
+    }
+
+    /// The warm-start active sets (displacement step, projection).
+    std::vector<char> displacement_active;
+    std::vector<char> projection_active;
+
+  private:
+    const double         time_step;
+    const SystemMatrices system;
+    MatrixType           S;
+    /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
+    MatrixType         preconditioner_matrix;
+    ActiveSetSolver    displacement_solver;
+    ActiveSetSolver    projection_solver;
+    const ContactRows *rows;
+  };
+
+  /// One scheme's step (or initial velocity): advances (u, udot) in place.
+  using StepFunction = void (*)(StepOperators &operators,
+                                VectorType    &u,
+                                VectorType    &udot,
+                                StepReport    &report);
+
+  /**
+   * A time integrator: its name in the prm, a description, whether it is the
+   * static problem, its step and (optionally) its initial velocity. A new
+   * scheme is one named function and one line in schemes().
+   */
+  struct Scheme
+  {
+    std::string  name;
+    std::string  description;
+    bool         is_static  = false;
+    StepFunction initialize = nullptr;
+    StepFunction step       = nullptr;
+  };
+
+  /// All schemes, in the order of the documentation.
+  const std::vector<Scheme> &
+  schemes();
+
+  /// The scheme of this name; throws with the list of names otherwise.
+  const Scheme &
+  scheme_by_name(const std::string &name);
+
+  /// N-CI (Kane et al., eq. 11).
+  void
+  step_nci(StepOperators &ops, VectorType &u, VectorType &udot, StepReport &);
+  /// N-CS (Deuflhard, Krause, Ertel 2007).
+  void
+  step_ncs(StepOperators &ops, VectorType &u, VectorType &udot, StepReport &);
+  /// N-CS++ (eq. 12d-f).
+  void
+  step_ncspp(StepOperators &ops, VectorType &u, VectorType &udot, StepReport &);
+  /// N-CS++'s initial velocity (eq. 12c).
+  void
+  initialize_ncspp(StepOperators &ops,
+                   VectorType    &u,
+                   VectorType    &udot,
+                   StepReport    &report);
+  /// The static problem min 1/2 v^T A v - f^T v on K_h.
+  void
+  step_static(StepOperators &ops,
+              VectorType    &u,
+              VectorType    &udot,
+              StepReport    &report);
+
+  /**
+   * A scheme with its operators at one time step tau: the object the time
+   * loop steps with. Rebuilt when the mesh or tau changes (the active sets
+   * carry over through warm_start()).
+   */
+  class TimeIntegrator
+  {
+  public:
+    /// Declares "Time integration/Scheme".
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// The scheme named in the prm.
+    static const Scheme &
+    parse_scheme(ParameterHandler &prm);
+
+    TimeIntegrator(const Scheme                         &scheme,
+                   const double                          tau,
+                   const SystemMatrices                 &system,
+                   const ActiveSetSolver::Parameters    &solver_parameters,
+                   const IndexSet                       &locally_owned,
+                   const IndexSet                       &locally_relevant,
+                   const AffineConstraints<double>      &mesh_constraints,
+                   const ContactRows                    &rows,
+                   const std::vector<std::vector<bool>> &constant_modes,
+                   const MPI_Comm                        comm);
+
+    /// The initial velocity of the scheme (N-CS++: eq. 12c; the others keep
+    /// udot_0).
+    StepReport
+    initialize(VectorType &u, VectorType &udot);
+
+    /// Advances (u, udot) from t_n to t_{n+1}.
+    StepReport
+    step(VectorType &u, VectorType &udot);
+
+    /// u <- P(u), the M-projection onto K_h (after a mesh transfer).
+    void
+    project_onto_constraints(VectorType &u);
+
+    /**
+     * After a mesh transfer: if u violates the new K_h (new nodes on a
+     * curved surface, coarsened nodes), u <- P(u); the active sets restart
+     * from the rows that touch. Returns the largest violation before the
+     * projection (m).
+     */
+    double
+    restore_constraints(VectorType &u, const ContactRowOperator &rows);
+
+    /// Sets the active sets the next solves start from (displacement step
+    /// and projection; the second defaults to the first).
+    void
+    warm_start(const std::vector<char> &active,
+               const std::vector<char> &projection = {});
+
+    /// The warm-start active sets (displacement step, projection).
+    std::pair<std::vector<char>, std::vector<char>>
+    active_sets() const
+    {
+      return {operators.displacement_active, operators.projection_active};
+    }
+
+    /// The warm-start active sets (checkpoints).
+    void
+    save(std::map<std::string, std::string> &state) const;
+    void
+    load(const std::map<std::string, std::string> &state);
+
+    const Scheme &
+    get_scheme() const
+    {
+      return scheme;
+    }
+
+    double
+    time_step() const
+    {
+      return operators.tau();
+    }
+
+    /// Factor from a multiplier mu_p to the contact force: 2/tau^2 for the
+    /// dynamic schemes (eq. 13), 1 for the static problem.
+    double
+    force_factor() const
+    {
+      return scheme.is_static ? 1. : 2. / (time_step() * time_step());
+    }
+
+  private:
+    /// A report with every per-row list sized and zero.
+    StepReport
+    empty_report() const;
+
+    const Scheme  scheme;
+    StepOperators operators;
+  };
+} // namespace dyncontact
+
+#endif

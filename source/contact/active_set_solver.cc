@@ -1,0 +1,519 @@
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <dyncontact/contact/active_set_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+namespace dyncontact
+{
+  ContactRowOperator::ContactRowOperator(const MPI_Comm comm)
+    : comm(comm)
+  {}
+
+
+
+  void
+  ContactRowOperator::reinit(const IndexSet    &owned,
+                             const IndexSet    &relevant,
+                             const ContactRows &rows)
+  {
+    locally_owned = owned;
+    ghosts        = relevant;
+    for (const ContactRow &row : rows.rows)
+      for (const auto &entry : row.entries)
+        ghosts.add_index(entry.first);
+    ghosts.compress();
+    contact_rows = &rows;
+  }
+
+
+
+  std::vector<double>
+  ContactRowOperator::apply(const VectorType &v) const
+  {
+    VectorType ghosted(locally_owned, ghosts, comm);
+    ghosted = v;
+    std::vector<double> values(size(), 0.);
+    const unsigned int  my_rank = Utilities::MPI::this_mpi_process(comm);
+    for (unsigned int p = 0; p < values.size(); ++p)
+      if (contact_rows->rows[p].owner == my_rank)
+        for (const auto &entry : contact_rows->rows[p].entries)
+          values[p] += entry.second * ghosted(entry.first);
+    Utilities::MPI::sum(values, comm, values);
+    return values;
+  }
+
+
+
+  std::vector<double>
+  ContactRowOperator::constraint_values(const VectorType &v) const
+  {
+    std::vector<double> values = apply(v);
+    for (unsigned int p = 0; p < values.size(); ++p)
+      values[p] -= contact_rows->rows[p].gap;
+    return values;
+  }
+
+
+
+  std::string
+  ActiveSetSolver::Result::failure() const
+  {
+    std::ostringstream text;
+    switch (status)
+      {
+        case Status::converged:
+          break;
+        case Status::active_set_not_converged:
+          text << "the active-set iteration did not converge within "
+                  "'Contact solver/Maximum active-set iterations' "
+                  "(complementarity residual "
+               << std::setprecision(3) << residual << " m)";
+          break;
+        case Status::linear_solver_failed:
+          text << "the CG solver did not converge within 'Contact "
+                  "solver/Maximum linear iterations' (residual "
+               << std::setprecision(3) << linear_residual << ")";
+          break;
+      }
+    return text.str();
+  }
+
+
+
+  void
+  ActiveSetSolver::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    prm.declare_entry(
+      "Maximum active-set iterations",
+      "50",
+      Patterns::Integer(1),
+      "Largest number of primal-dual active-set iterations per constrained "
+      "problem (one displacement step or one L2 projection). A problem that "
+      "has not converged then stops the run with a message. Dimensionless.");
+    prm.declare_entry(
+      "Linear solver tolerance",
+      "1e-12",
+      Patterns::Double(0.),
+      "Relative tolerance (reduction of the preconditioned residual) of the "
+      "CG solver for each condensed linear system. Dimensionless, in (0, 1).");
+    prm.declare_entry("Maximum linear iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Largest number of CG iterations per linear system.");
+    prm.declare_entry("Initial penetration",
+                      "reject",
+                      Patterns::Selection("reject|project"),
+                      "What to do with an initial configuration that "
+                      "penetrates (a slave node inside the obstacle or the "
+                      "master body): reject it with a message, or project "
+                      "the initial displacement onto K_h (the M-projection) "
+                      "with a warning that says by how much.");
+    prm.leave_subsection();
+  }
+
+  void
+  ActiveSetSolver::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    max_iterations        = prm.get_integer("Maximum active-set iterations");
+    linear_tolerance      = prm.get_double("Linear solver tolerance");
+    max_linear_iterations = prm.get_integer("Maximum linear iterations");
+    project_initial_penetration = (prm.get("Initial penetration") == "project");
+    prm.leave_subsection();
+    AssertThrow(linear_tolerance > 0. && linear_tolerance < 1.,
+                ExcMessage("Contact solver/Linear solver tolerance must lie in "
+                           "(0, 1); got " +
+                           std::to_string(linear_tolerance) + "."));
+  }
+
+
+
+  ActiveSetSolver::ActiveSetSolver(const Parameters &parameters,
+                                   const MPI_Comm    comm)
+    : parameters(parameters)
+    , comm(comm)
+    , row_operator(comm)
+  {}
+
+
+
+  void
+  ActiveSetSolver::reinit(const IndexSet                  &owned,
+                          const IndexSet                  &relevant,
+                          const AffineConstraints<double> &constraints,
+                          const ContactRows               &contact_rows)
+  {
+    locally_owned = owned;
+    row_operator.reinit(owned, relevant, contact_rows);
+    mesh_constraints.clear();
+    mesh_constraints.copy_from(constraints);
+    rows = &contact_rows;
+    Tx.reinit(locally_owned, comm);
+    additions.reinit(locally_owned, row_operator.ghost_set(), comm, true);
+    H = nullptr;
+  }
+
+
+
+  void
+  ActiveSetSolver::set_matrix(const MatrixType &matrix,
+                              const bool        is_diagonal,
+                              const MatrixType *preconditioner_matrix)
+  {
+    H             = &matrix;
+    H_is_diagonal = is_diagonal;
+
+    diagonal.reinit(locally_owned, comm);
+    for (const auto i : locally_owned)
+      diagonal(i) = matrix.diag_element(i);
+    diagonal.compress(VectorOperation::insert);
+
+    // the scaling of the active-set criterion for each row: H's diagonal at
+    // the eliminated DoF, known on the owner, summed to all ranks
+    row_scaling.assign(rows->size(), 0.);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      if (locally_owned.is_element(rows->rows[p].eliminated_dof()))
+        row_scaling[p] = diagonal(rows->rows[p].eliminated_dof());
+    Utilities::MPI::sum(row_scaling, comm, row_scaling);
+
+    // A pointwise projection is possible if H is diagonal, no row has
+    // master entries, and the only mesh constraints are Dirichlet lines
+    // (no entries) that touch no row's DoFs.
+    pointwise = is_diagonal;
+    for (const ContactRow &row : rows->rows)
+      {
+        if (row.has_master_entries())
+          pointwise = false;
+        for (const auto &entry : row.entries)
+          if (mesh_constraints.is_constrained(entry.first))
+            pointwise = false;
+      }
+    for (const auto &line : mesh_constraints.get_lines())
+      if (!line.entries.empty())
+        pointwise = false;
+    pointwise = (Utilities::MPI::min(pointwise ? 1 : 0, comm) == 1);
+
+    amg.reset();
+    jacobi.reset();
+    if (is_diagonal)
+      {
+        jacobi = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
+        jacobi->initialize(matrix);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        data.constant_modes        = constant_modes;
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(preconditioner_matrix ? *preconditioner_matrix : matrix,
+                        data);
+      }
+  }
+
+
+
+  void
+  ActiveSetSolver::make_constraints(const std::vector<char>   &active,
+                                    AffineConstraints<double> &constraints,
+                                    const bool homogeneous) const
+  {
+    constraints.clear();
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      if (active[p])
+        {
+          const ContactRow      &row = rows->rows[p];
+          const global_dof_index i   = row.eliminated_dof();
+          const double           c_i = row.entries[row.eliminated].second;
+          // c_i v_i + sum_{k != i} c_k v_k = g
+          constraints.add_line(i);
+          for (unsigned int k = 0; k < row.entries.size(); ++k)
+            if (k != row.eliminated)
+              constraints.add_entry(i,
+                                    row.entries[k].first,
+                                    -row.entries[k].second / c_i);
+          if (!homogeneous)
+            constraints.set_inhomogeneity(i, row.gap / c_i);
+        }
+    constraints.merge(mesh_constraints,
+                      AffineConstraints<double>::left_object_wins);
+    constraints.close();
+  }
+
+
+
+  void
+  ActiveSetSolver::transpose_distribute(
+    const AffineConstraints<double> &homogeneous,
+    VectorType                      &z) const
+  {
+    // z <- T^T z: every owned constrained entry z_i is added, times the
+    // coefficient, to the entries z_j it depends on (possibly owned
+    // elsewhere), and then set to zero.
+    additions = 0.;
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        {
+          const double z_i = z(line.index);
+          for (const auto &entry : line.entries)
+            additions(entry.first) += entry.second * z_i;
+        }
+    additions.compress(VectorOperation::add);
+    z += additions;
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        z(line.index) = 0.;
+    z.compress(VectorOperation::insert);
+  }
+
+
+
+  void
+  ActiveSetSolver::vmult_condensed(const AffineConstraints<double> &homogeneous,
+                                   VectorType                      &y,
+                                   const VectorType                &x) const
+  {
+    Tx = x;
+    homogeneous.distribute(Tx);
+    H->vmult(y, Tx);
+    transpose_distribute(homogeneous, y);
+    // constrained entries: identity scaled by H's diagonal (they stay zero)
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        y(line.index) = diagonal(line.index) * x(line.index);
+    y.compress(VectorOperation::insert);
+  }
+
+
+
+  ActiveSetSolver::Result
+  ActiveSetSolver::solve_pointwise(const VectorType    &r,
+                                   VectorType          &v,
+                                   std::vector<char>   &active,
+                                   std::vector<double> &multipliers) const
+  {
+    // H diagonal, rows on disjoint unconstrained slave DoFs: the
+    // unconstrained minimiser is v = D^{-1} r, and each row is then the
+    // projection of its node onto a half-space in the D-norm.
+    for (const auto i : locally_owned)
+      v(i) = mesh_constraints.is_constrained(i) ? 0. : r(i) / diagonal(i);
+    v.compress(VectorOperation::insert);
+
+    const unsigned int  my_rank = Utilities::MPI::this_mpi_process(comm);
+    std::vector<double> mu(rows->size(), 0.);
+    std::vector<double> act(rows->size(), 0.);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      {
+        const ContactRow &row = rows->rows[p];
+        if (row.owner != my_rank)
+          continue;
+        double cv = 0., cDc = 0.;
+        for (const auto &entry : row.entries)
+          {
+            cv += entry.second * v(entry.first);
+            cDc += entry.second * entry.second / diagonal(entry.first);
+          }
+        const double t = (cv - row.gap) / cDc;
+        if (t > 0.)
+          {
+            for (const auto &entry : row.entries)
+              v(entry.first) -= t * entry.second / diagonal(entry.first);
+            mu[p]  = t;
+            act[p] = 1.;
+          }
+      }
+    v.compress(VectorOperation::insert);
+    Utilities::MPI::sum(mu, comm, mu);
+    multipliers = mu;
+    Utilities::MPI::sum(act, comm, act);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      active[p] = (act[p] > 0.5);
+    Result result;
+    result.iterations = 1;
+    return result;
+  }
+
+
+
+  ActiveSetSolver::Result
+  ActiveSetSolver::solve(const VectorType    &r,
+                         VectorType          &v,
+                         std::vector<char>   &active,
+                         std::vector<double> &multipliers) const
+  {
+    Assert(H != nullptr, ExcInternalError());
+    active.resize(rows->size(), 0);
+    multipliers.assign(rows->size(), 0.);
+
+    if (pointwise)
+      return solve_pointwise(r, v, active, multipliers);
+
+    Result                      result;
+    std::set<std::vector<char>> visited;
+    AffineConstraints<double>   constraints, homogeneous;
+    VectorType                  x(r), b(r), k(r), residual(r);
+    const double                r_norm = r.l2_norm();
+
+    for (result.iterations = 1;; ++result.iterations)
+      {
+        make_constraints(active, constraints, false);
+        make_constraints(active, homogeneous, true);
+
+        // k: the inhomogeneities (v = T x + k)
+        k = 0.;
+        constraints.distribute(k);
+
+        // b = T^T (r - H k)
+        H->vmult(b, k);
+        b.sadd(-1., 1., r);
+        transpose_distribute(homogeneous, b);
+
+        // warm start: the previous iterate, constrained entries zero
+        x = v;
+        for (const auto &line : homogeneous.get_lines())
+          if (locally_owned.is_element(line.index))
+            x(line.index) = 0.;
+        x.compress(VectorOperation::insert);
+
+        const double tolerance =
+          std::max(parameters.linear_tolerance * std::max(b.l2_norm(), r_norm),
+                   1e-300);
+        SolverControl control(parameters.max_linear_iterations, tolerance);
+        SolverCG<VectorType> cg(control);
+
+        struct Operator
+        {
+          const ActiveSetSolver           *solver;
+          const AffineConstraints<double> *homogeneous;
+          void
+          vmult(VectorType &dst, const VectorType &src) const
+          {
+            solver->vmult_condensed(*homogeneous, dst, src);
+          }
+        } op{this, &homogeneous};
+
+        struct Preconditioner
+        {
+          const ActiveSetSolver           *solver;
+          const AffineConstraints<double> *homogeneous;
+          void
+          vmult(VectorType &dst, const VectorType &src) const
+          {
+            if (solver->amg)
+              solver->amg->vmult(dst, src);
+            else
+              solver->jacobi->vmult(dst, src);
+            for (const auto &line : homogeneous->get_lines())
+              if (solver->locally_owned.is_element(line.index))
+                dst(line.index) = 0.;
+            dst.compress(VectorOperation::insert);
+          }
+        } preconditioner{this, &homogeneous};
+
+        try
+          {
+            cg.solve(op, x, b, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            // reported, not thrown: the step control acts on it
+            result.linear_iterations += e.last_step;
+            result.linear_residual = e.last_residual;
+            result.status          = Status::linear_solver_failed;
+            return result;
+          }
+        result.linear_iterations += control.last_step();
+
+        v = x;
+        constraints.distribute(v);
+
+        // multipliers from the residual r - H v at the slave nodes
+        H->vmult(residual, v);
+        residual.sadd(-1., 1., r);
+        {
+          VectorType ghosted(locally_owned, row_operator.ghost_set(), comm);
+          ghosted                    = residual;
+          const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+          for (unsigned int p = 0; p < rows->size(); ++p)
+            {
+              const ContactRow &row = rows->rows[p];
+              multipliers[p]        = 0.;
+              if (row.owner == my_rank && active[p])
+                for (unsigned int c = 0; c < row.n_components; ++c)
+                  multipliers[p] +=
+                    row.normal[c] * ghosted(row.entries[c].first);
+            }
+          Utilities::MPI::sum(multipliers, comm, multipliers);
+        }
+
+        // new active set: mu_p + c_p (C v - g)_p > 0
+        // (a displacement tolerance delta keeps round-off from flipping rows
+        // that sit exactly on the constraint)
+        const std::vector<double> violation = row_operator.constraint_values(v);
+        double                    scale     = v.linfty_norm();
+        for (const ContactRow &row : rows->rows)
+          scale = std::max(scale, std::abs(row.gap));
+        const double      delta = 1e-11 * scale;
+        std::vector<char> new_active(rows->size(), 0);
+        for (unsigned int p = 0; p < rows->size(); ++p)
+          new_active[p] = (multipliers[p] + row_scaling[p] * violation[p] >
+                           row_scaling[p] * delta) ?
+                            1 :
+                            0;
+
+        result.residual = 0.;
+        for (unsigned int p = 0; p < rows->size(); ++p)
+          result.residual =
+            std::max(result.residual,
+                     std::abs(std::min(multipliers[p] / row_scaling[p],
+                                       -violation[p])));
+        // converged: the active set is unchanged, or it still changes only
+        // on degenerate rows (touching with zero force) while the
+        // complementarity conditions hold to the displacement tolerance
+        if (new_active == active || result.residual <= delta)
+          break;
+        if (result.iterations >= parameters.max_iterations)
+          {
+            result.status = Status::active_set_not_converged;
+            break;
+          }
+        // cycling between active sets ("ping-pong"): damp the iteration by
+        // changing only the row that violates its condition the most
+        visited.insert(active);
+        if (visited.count(new_active))
+          {
+            result.cycled      = true;
+            unsigned int worst = 0;
+            double       size  = -1.;
+            for (unsigned int p = 0; p < rows->size(); ++p)
+              if (new_active[p] != active[p])
+                {
+                  const double c =
+                    std::abs(multipliers[p] / row_scaling[p] + violation[p]);
+                  if (c > size)
+                    {
+                      size  = c;
+                      worst = p;
+                    }
+                }
+            new_active        = active;
+            new_active[worst] = !active[worst];
+          }
+        active = new_active;
+      }
+    return result;
+  }
+} // namespace dyncontact

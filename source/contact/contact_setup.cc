@@ -1,0 +1,362 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <boost/serialization/array.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <dyncontact/contact/contact_setup.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  ContactSetup<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Slave side",
+                      "auto",
+                      Patterns::Selection("auto|1|2"),
+                      "Two-body scenes: which side of the contact pair is the "
+                      "slave (its nodes carry the constraint rows): auto (the "
+                      "finer side, by mean face size), 1 or 2.");
+    prm.declare_entry("Search radius",
+                      "0",
+                      Patterns::Double(0.),
+                      "Two-body scenes: slave nodes farther than this from "
+                      "the master surface (in the reference configuration) "
+                      "get no constraint row, in m; 0 = the scene's default "
+                      "(the gmsh scene has none).");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    const std::string slave = prm.get("Slave side");
+    slave_side              = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
+    search_radius           = prm.get_double("Search radius");
+    prm.leave_subsection();
+    prm.enter_subsection("Contact solver");
+    project_initial_penetration = (prm.get("Initial penetration") == "project");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  ContactSetup<dim>::ContactSetup(const Parameters &parameters,
+                                  const MPI_Comm    comm)
+    : parameters(parameters)
+    , comm(comm)
+    , row_operator(comm)
+  {}
+
+
+
+  template <int dim>
+  std::vector<ContactPair>
+  ContactSetup<dim>::contact_pairs(const Scene<dim> &scene) const
+  {
+    std::vector<ContactPair> pairs = scene.contact_pairs();
+    for (ContactPair &pair : pairs)
+      {
+        if (parameters.slave_side >= 0)
+          pair.slave_side = parameters.slave_side;
+        if (parameters.search_radius > 0.)
+          pair.search_radius = parameters.search_radius;
+      }
+    return pairs;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::check(const Scene<dim> &scene) const
+  {
+    for (const ContactPair &pair : contact_pairs(scene))
+      AssertThrow(pair.search_radius > 0.,
+                  ExcMessage("Contact/Search radius must be > 0 (m) for the "
+                             "scene '" +
+                             scene.name() + "': it has no default."));
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::setup(const Scene<dim>              &scene,
+                           const SemiDiscreteSystem<dim> &system,
+                           const Mapping<dim>            &mapping,
+                           const ConditionalOStream      &pcout)
+  {
+    rows.rows.clear();
+    row_scalar_dofs.clear();
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+
+    const auto &fe                 = system.get_fe();
+    const auto &scalar_fe          = system.get_scalar_fe();
+    const auto &dof_handler        = system.get_dof_handler();
+    const auto &scalar_dof_handler = system.get_scalar_dof_handler();
+    const auto &locally_owned      = system.locally_owned_dofs();
+    const auto &mesh_constraints   = system.get_constraints();
+    VectorType  w_ghosted(locally_owned, system.locally_relevant_dofs(), comm);
+    w_ghosted = system.get_boundary_weights();
+
+    auto contains = [](const std::vector<types::boundary_id> &ids,
+                       const types::boundary_id               id) {
+      return std::find(ids.begin(), ids.end(), id) != ids.end();
+    };
+
+    // Calls f(x, dofs, scalar dof) once for every locally owned, non-hanging
+    // node on the boundary parts @p ids.
+    auto for_each_boundary_node =
+      [&](const std::vector<types::boundary_id> &ids, const auto &f) {
+        std::set<types::global_dof_index>    seen;
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        std::vector<types::global_dof_index> scalar_dofs(
+          scalar_fe.n_dofs_per_cell());
+        const auto &unit_points = scalar_fe.get_unit_support_points();
+        auto        scalar_cell = scalar_dof_handler.begin_active();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            if (cell->is_locally_owned())
+              for (const unsigned int face : cell->face_indices())
+                if (cell->face(face)->at_boundary() &&
+                    contains(ids, cell->face(face)->boundary_id()))
+                  {
+                    cell->get_dof_indices(dofs);
+                    scalar_cell->get_dof_indices(scalar_dofs);
+                    for (unsigned int node = 0;
+                         node < scalar_fe.n_dofs_per_cell();
+                         ++node)
+                      {
+                        if (!scalar_fe.has_support_on_face(node, face))
+                          continue;
+                        std::array<types::global_dof_index, dim> node_dofs;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          node_dofs[d] =
+                            dofs[fe.component_to_system_index(d, node)];
+                        if (!locally_owned.is_element(node_dofs[0]) ||
+                            seen.count(node_dofs[0]))
+                          continue;
+                        seen.insert(node_dofs[0]);
+                        f(mapping.transform_unit_to_real_cell(
+                            cell, unit_points[node]),
+                          node_dofs,
+                          scalar_dofs[node]);
+                      }
+                  }
+            ++scalar_cell;
+          }
+      };
+
+    // completes a row: weight, owner, eliminated component (the free one
+    // with the largest |nu_i|); false for a node without a free component
+    // (a hanging node, or a node fixed by Dirichlet data)
+    auto finish_row = [&](ContactRow &row) {
+      row.owner  = my_rank;
+      row.weight = w_ghosted(row.entries[0].first);
+      int best   = -1;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!mesh_constraints.is_constrained(row.entries[d].first) &&
+            std::abs(row.normal[d]) > 1e-12 &&
+            (best < 0 || std::abs(row.normal[d]) > std::abs(row.normal[best])))
+          best = d;
+      row.eliminated = std::max(best, 0);
+      return best >= 0;
+    };
+
+    std::vector<std::pair<ContactRow, types::global_dof_index>> local_rows;
+
+    // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
+    if (const auto obstacle = scene.obstacle())
+      for_each_boundary_node(
+        scene.contact_boundary_ids(),
+        [&](const Point<dim> &x, const auto &dofs, const auto scalar_dof) {
+          ContactRow row;
+          row.n_components = dim;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              row.entries.emplace_back(dofs[d], -obstacle->normal[d]);
+              row.normal[d]   = -obstacle->normal[d];
+              row.position[d] = x[d];
+            }
+          row.gap = (x - obstacle->point) * obstacle->normal;
+          AssertThrow(std::isfinite(row.gap),
+                      ExcMessage("The gap of the node at (" +
+                                 Utilities::to_string(x[0]) + ", " +
+                                 Utilities::to_string(x[1]) +
+                                 ", ...) to the obstacle is not finite."));
+          AssertThrow(parameters.project_initial_penetration ||
+                        row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
+                      ExcMessage("The initial configuration penetrates the "
+                                 "obstacle: the node at (" +
+                                 Utilities::to_string(x[0]) + ", " +
+                                 Utilities::to_string(x[1]) + ", ...) lies " +
+                                 Utilities::to_string(-row.gap) +
+                                 " m inside it. Correct the scene, or set "
+                                 "'Contact solver/Initial penetration = "
+                                 "project'."));
+          if (finish_row(row))
+            local_rows.emplace_back(row, scalar_dof);
+        });
+
+    // two-body pairs: the mortar-like mapping phi_h onto the gathered master
+    // surface
+    for (const ContactPair &pair : contact_pairs(scene))
+      {
+        const std::array<std::vector<MasterFace<dim>>, 2> sides = {
+          {gather_faces(system, pair.first_side),
+           gather_faces(system, pair.second_side)}};
+        int slave = pair.slave_side;
+        if (slave < 0)
+          {
+            // the finer side is the slave: compare the mean size of the
+            // faces that face the other side (their centre has an image on
+            // it), so that a coarse far field does not count
+            std::array<double, 2> size{{0., 0.}};
+            for (unsigned int s = 0; s < 2; ++s)
+              {
+                const ContactMapping<dim> other(sides[1 - s],
+                                                pair.search_radius);
+                unsigned int              n = 0;
+                for (const auto &face : sides[s])
+                  {
+                    Point<dim> centre;
+                    for (const auto &v : face.vertices)
+                      centre += v / double(face.vertices.size());
+                    if (other.find_image(centre))
+                      {
+                        size[s] +=
+                          face.vertices[0].distance(face.vertices.back());
+                        ++n;
+                      }
+                  }
+                size[s] = (n > 0) ? size[s] / n : 1e300;
+              }
+            slave = (size[1] < size[0]) ? 1 : 0;
+          }
+        const ContactMapping<dim> phi(sides[1 - slave], pair.search_radius);
+        for_each_boundary_node(
+          slave == 0 ? pair.first_side : pair.second_side,
+          [&](const Point<dim> &x, const auto &dofs, const auto scalar_dof) {
+            const auto image = phi.find_image(x);
+            if (!image)
+              return;
+            auto       projection = *image;
+            const bool inside     = (x - image->point) * image->master_normal <
+                                -1e-10 * pair.search_radius;
+            AssertThrow(parameters.project_initial_penetration || !inside,
+                        ExcMessage(
+                          "The initial configuration penetrates: the slave "
+                          "node at (" +
+                          Utilities::to_string(x[0]) + ", " +
+                          Utilities::to_string(x[1]) +
+                          ", ...) lies inside the master body by " +
+                          Utilities::to_string(image->gap) +
+                          " m. Correct the mesh, or set 'Contact "
+                          "solver/Initial penetration = project'."));
+            if (inside)
+              {
+                // a negative gap along the master's normal: the row asks
+                // for the node to be moved out
+                projection.normal = -image->master_normal;
+                projection.gap    = -image->gap;
+              }
+            ContactRow row = make_two_body_row<dim>(
+              x, dofs, projection, phi.faces()[image->face], fe.degree);
+            if (finish_row(row))
+              local_rows.emplace_back(row, scalar_dof);
+          });
+        pcout << "   contact pair: slave is side " << slave + 1 << " ("
+              << sides[slave].size() << " faces), master side " << 2 - slave
+              << " (" << sides[1 - slave].size() << " faces)" << std::endl;
+      }
+
+    // every rank gets all rows, in rank order
+    const auto all = Utilities::MPI::all_gather(comm, local_rows);
+    for (const auto &rank_rows : all)
+      for (const auto &r : rank_rows)
+        {
+          rows.rows.push_back(r.first);
+          row_scalar_dofs.push_back(r.second);
+        }
+
+    row_operator.reinit(locally_owned, system.locally_relevant_dofs(), rows);
+
+    double measure = 0.;
+    for (const auto &row : rows.rows)
+      measure += row.weight;
+    pcout << "   contact rows: " << rows.size()
+          << ", measure of the slave contact boundary: " << measure
+          << std::endl;
+  }
+
+
+
+  template <int dim>
+  std::vector<MasterFace<dim>>
+  ContactSetup<dim>::gather_faces(
+    const SemiDiscreteSystem<dim>         &system,
+    const std::vector<types::boundary_id> &ids) const
+  {
+    const auto                  &fe               = system.get_fe();
+    const auto                  &mesh_constraints = system.get_constraints();
+    std::vector<MasterFace<dim>> local;
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : system.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
+                ids.end())
+            {
+              const auto      face = cell->face(f);
+              MasterFace<dim> master;
+              for (const unsigned int v : face->vertex_indices())
+                master.vertices.push_back(face->vertex(v));
+              master.cell_center         = cell->center();
+              const unsigned int n_nodes = fe.n_dofs_per_face() / dim;
+              master.node_dofs.resize(n_nodes);
+              master.node_dof0.assign(n_nodes, numbers::invalid_dof_index);
+              face->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                {
+                  const auto [c, node] = fe.face_system_to_component_index(i);
+                  const auto dof       = face_dofs[i];
+                  auto      &entries   = master.node_dofs[node][c];
+                  if (mesh_constraints.is_constrained(dof))
+                    {
+                      // hanging: its parents; Dirichlet: nothing (fixed)
+                      for (const auto &entry :
+                           *mesh_constraints.get_constraint_entries(dof))
+                        entries.push_back(entry);
+                    }
+                  else
+                    {
+                      entries.emplace_back(dof, 1.);
+                      if (c == 0)
+                        master.node_dof0[node] = dof;
+                    }
+                }
+              local.push_back(master);
+            }
+    std::vector<MasterFace<dim>> all;
+    for (const auto &rank_faces : Utilities::MPI::all_gather(comm, local))
+      all.insert(all.end(), rank_faces.begin(), rank_faces.end());
+    return all;
+  }
+
+  template class ContactSetup<2>;
+  template class ContactSetup<3>;
+} // namespace dyncontact

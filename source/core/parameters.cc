@@ -1,0 +1,158 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <dyncontact/core/parameters.h>
+#include <dyncontact/core/simulator.h>
+#include <dyncontact/scenes/interface.h>
+
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace dyncontact
+{
+  void
+  GlobalParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the simulation: 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "results",
+                      Patterns::Anything(),
+                      "Folder for the VTU/PVTU/PVD files and statistics.tsv; "
+                      "created if missing, relative to the working directory.");
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Initial global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Number of global refinements of the scene's coarse "
+                      "mesh, 0 to 12.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GlobalParameters::parse_parameters(ParameterHandler &prm)
+  {
+    dimension        = prm.get_integer("Dimension");
+    output_directory = prm.get("Output directory");
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Output directory must not be empty."));
+    prm.enter_subsection("Mesh");
+    initial_refinements = prm.get_integer("Initial global refinements");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  declare_all_parameters(ParameterHandler &prm)
+  {
+    Simulator<2>::declare_parameters(prm);
+  }
+
+
+
+  namespace
+  {
+    /// The full names (subsection/.../entry) of every declared entry.
+    std::set<std::string>
+    declared_entries(const ParameterHandler &prm)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      std::istringstream       in(text.str());
+      std::vector<std::string> path;
+      std::set<std::string>    names;
+      for (std::string line; std::getline(in, line);)
+        {
+          line = Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            path.push_back(Utilities::trim(line.substr(11)));
+          else if (line == "end" && !path.empty())
+            path.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            {
+              std::string name;
+              for (const auto &p : path)
+                name += p + "/";
+              names.insert(name +
+                           Utilities::trim(line.substr(4, line.find('=') - 4)));
+            }
+        }
+      return names;
+    }
+  } // namespace
+
+
+
+  void
+  check_for_misplaced_entries(const std::string &text,
+                              const std::string &source)
+  {
+    ParameterHandler prm;
+    declare_all_parameters(prm);
+    const std::set<std::string> declared = declared_entries(prm);
+
+    std::istringstream       in(text);
+    std::vector<std::string> path;
+    unsigned int             line_number = 0;
+    for (std::string line; std::getline(in, line);)
+      {
+        ++line_number;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos)
+          line.erase(hash);
+        line = Utilities::trim(line);
+        if (line.rfind("subsection ", 0) == 0)
+          path.push_back(Utilities::trim(line.substr(11)));
+        else if (line == "end" && !path.empty())
+          path.pop_back();
+        else if (line.rfind("set ", 0) == 0 &&
+                 line.find('=') != std::string::npos)
+          {
+            const std::string entry =
+              Utilities::trim(line.substr(4, line.find('=') - 4));
+            std::string where;
+            for (const auto &p : path)
+              where += p + "/";
+            if (declared.count(where + entry))
+              continue;
+            // the subsections that do declare an entry of this name
+            const std::string name = (path.size() == 1 && path[0] == "Scene" &&
+                                      entry == "Contact search radius") ?
+                                       "Search radius" :
+                                       entry;
+            std::string       candidates;
+            for (const auto &full : declared)
+              if (full.size() > name.size() &&
+                  full.compare(full.size() - name.size() - 1,
+                               name.size() + 1,
+                               "/" + name) == 0)
+                candidates += (candidates.empty() ? "" : ", ") +
+                              full.substr(0, full.size() - name.size() - 1);
+            if (candidates.empty())
+              continue; // the parser's own message names the entry
+            const std::string at =
+              "Line " + std::to_string(line_number) + " of '" + source + "': ";
+            AssertThrow(!(path.size() == 1 && path[0] == "Scene"),
+                        ExcMessage(at + "'Scene/" + entry +
+                                   "' has moved: each scene reads its own "
+                                   "subsection now. Set '" +
+                                   name + "' in subsection " + candidates +
+                                   " (see doc/running.md)."));
+            AssertThrow(false,
+                        ExcMessage(at + "subsection '" +
+                                   (path.empty() ?
+                                      std::string("(top level)") :
+                                      where.substr(0, where.size() - 1)) +
+                                   "' has no entry '" + entry +
+                                   "'; it is declared in subsection " +
+                                   candidates + "."));
+          }
+      }
+  }
+} // namespace dyncontact

@@ -1,0 +1,123 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/core/parameters.h>
+#include <dyncontact/core/run.h>
+#include <dyncontact/core/simulator.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace dyncontact
+{
+  Statistics
+  run_simulation(const std::string &prm_text,
+                 const MPI_Comm     comm,
+                 const std::string &source)
+  {
+    check_for_misplaced_entries(prm_text, source);
+    ParameterHandler prm;
+    declare_all_parameters(prm);
+    std::istringstream in(prm_text);
+    prm.parse_input(in, source);
+
+    std::string input_directory;
+    if (std::filesystem::exists(source))
+      input_directory = std::filesystem::path(source).parent_path().string();
+
+    if (prm.get_integer("Dimension") == 2)
+      return Simulator<2>(prm, input_directory, comm).run();
+    else
+      return Simulator<3>(prm, input_directory, comm).run();
+  }
+
+
+
+  void
+  print_parameters(std::ostream &out)
+  {
+    ParameterHandler prm;
+    declare_all_parameters(prm);
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+
+
+
+  namespace
+  {
+    /// The message of an exception, without deal.II's file/line header.
+    std::string
+    message_of(const std::exception &e)
+    {
+      std::ostringstream s;
+      if (const auto *dealii_exception =
+            dynamic_cast<const ExceptionBase *>(&e))
+        dealii_exception->print_info(s);
+      else
+        s << e.what();
+      std::string text = s.str();
+      // trim leading and trailing white space
+      const auto first = text.find_first_not_of(" \n\t");
+      const auto last  = text.find_last_not_of(" \n\t");
+      return first == std::string::npos ? std::string("unknown error") :
+                                          text.substr(first, last - first + 1);
+    }
+  } // namespace
+
+
+
+  int
+  main_program(int argc, char **argv)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const std::string usage =
+      "Usage: dyncontact [--help] input.prm\n"
+      "Runs the simulation described by input.prm. Without an argument, or "
+      "with --help,\nprints every parameter with its documentation, units "
+      "and default.\n";
+
+    try
+      {
+        if (argc < 2 || std::string(argv[1]) == "--help" ||
+            std::string(argv[1]) == "-h")
+          {
+            if (root)
+              {
+                std::cout << usage << '\n';
+                print_parameters(std::cout);
+              }
+            return 0;
+          }
+        AssertThrow(argc == 2,
+                    ExcMessage("expected exactly one argument, the parameter "
+                               "file.\n" +
+                               usage));
+
+        const std::string filename = argv[1];
+        AssertThrow(std::filesystem::exists(filename),
+                    ExcMessage("the parameter file '" + filename +
+                               "' does not exist."));
+        AssertThrow(std::filesystem::is_regular_file(filename),
+                    ExcMessage("the parameter file '" + filename +
+                               "' is not a regular file."));
+        std::ifstream file(filename);
+        AssertThrow(file.good(),
+                    ExcMessage("cannot open the parameter file '" + filename +
+                               "' for reading."));
+        std::stringstream text;
+        text << file.rdbuf();
+
+        run_simulation(text.str(), MPI_COMM_WORLD, filename);
+      }
+    catch (const std::exception &e)
+      {
+        if (root)
+          std::cerr << "\ndyncontact: error: " << message_of(e) << "\n"
+                    << std::endl;
+        return 1;
+      }
+    return 0;
+  }
+} // namespace dyncontact

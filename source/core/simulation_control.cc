@@ -1,0 +1,222 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <dyncontact/core/simulation_control.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  namespace
+  {
+    std::string
+    number(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  void
+  SimulationControl::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("Time step",
+                      "0.0125",
+                      Patterns::Double(),
+                      "Time step tau, in s (> 0).");
+    prm.declare_entry("End time",
+                      "2.5",
+                      Patterns::Double(),
+                      "Final time T, in s (>= 0). If T is not a multiple of "
+                      "tau, the last step ends after T.");
+    prm.declare_entry("Time step adaptation",
+                      "false",
+                      Patterns::Bool(),
+                      "If a step's active-set iteration fails, retry it with "
+                      "half the time step (and keep that), down to Time step "
+                      "/ 1024; otherwise the run stops with a message.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Output interval",
+                      "0.05",
+                      Patterns::Double(),
+                      "Time between two VTU outputs, in s (>= 0; 0 writes "
+                      "every step). statistics.tsv gets every step.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Checkpointing");
+    prm.declare_entry("Interval in steps",
+                      "0",
+                      Patterns::Integer(0),
+                      "Write a checkpoint every this many steps (0: not by "
+                      "steps). Checkpoints go to <Output directory>/"
+                      "checkpoints; each is written to a new folder and only "
+                      "then marked as the last good one.");
+    prm.declare_entry("Interval in minutes",
+                      "0",
+                      Patterns::Double(0.),
+                      "Write a checkpoint when this much wall-clock time (in "
+                      "minutes) has passed since the last one (0: not by "
+                      "time).");
+    prm.leave_subsection();
+  }
+
+
+
+  SimulationControl::SimulationControl(const MPI_Comm comm)
+    : comm(comm)
+  {}
+
+
+
+  void
+  SimulationControl::parse_parameters(ParameterHandler &prm,
+                                      const bool        static_problem)
+  {
+    prm.enter_subsection("Time integration");
+    time_step            = prm.get_double("Time step");
+    end_time             = prm.get_double("End time");
+    time_step_adaptation = prm.get_bool("Time step adaptation");
+    prm.leave_subsection();
+    AssertThrow(std::isfinite(time_step) && time_step > 0.,
+                ExcMessage("Time integration/Time step must be a finite "
+                           "number > 0 (s); got " +
+                           number(time_step) + "."));
+    AssertThrow(std::isfinite(end_time) && end_time >= 0.,
+                ExcMessage("Time integration/End time must be a finite "
+                           "number >= 0 (s); got " +
+                           number(end_time) + "."));
+    AssertThrow(end_time / time_step < 1e8,
+                ExcMessage("Time integration: End time / Time step = " +
+                           number(end_time / time_step) +
+                           " steps; at most 1e8 steps are allowed."));
+
+    prm.enter_subsection("Output");
+    output_interval = prm.get_double("Output interval");
+    prm.leave_subsection();
+    AssertThrow(std::isfinite(output_interval) && output_interval >= 0.,
+                ExcMessage("Output/Output interval must be a finite number "
+                           ">= 0 (s); got " +
+                           number(output_interval) + "."));
+
+    prm.enter_subsection("Checkpointing");
+    checkpoint_steps   = prm.get_integer("Interval in steps");
+    checkpoint_minutes = prm.get_double("Interval in minutes");
+    prm.leave_subsection();
+
+    is_static   = static_problem;
+    tau         = time_step;
+    step        = 0;
+    time        = 0.;
+    time_base   = 0.;
+    steps_since = 0;
+    next_output = output_interval;
+  }
+
+
+
+  bool
+  SimulationControl::keep_going() const
+  {
+    return is_static ? step < 1 : time < end_time - 1e-9 * tau;
+  }
+
+
+
+  void
+  SimulationControl::advance()
+  {
+    ++step;
+    ++steps_since;
+    time = is_static ? end_time : time_base + steps_since * tau;
+  }
+
+
+
+  bool
+  SimulationControl::output_due() const
+  {
+    return time >= next_output - 1e-9 * tau || !keep_going();
+  }
+
+
+
+  void
+  SimulationControl::output_written()
+  {
+    next_output += output_interval;
+  }
+
+
+
+  bool
+  SimulationControl::checkpoint_due() const
+  {
+    bool due = checkpoint_steps > 0 && step % checkpoint_steps == 0;
+    if (checkpoint_minutes > 0.)
+      due = due || Utilities::MPI::broadcast(comm,
+                                             since_checkpoint.wall_time() >
+                                               60. * checkpoint_minutes,
+                                             0);
+    return due;
+  }
+
+
+
+  void
+  SimulationControl::checkpoint_written()
+  {
+    since_checkpoint.restart();
+  }
+
+
+
+  bool
+  SimulationControl::reduce_timestep()
+  {
+    if (!time_step_adaptation || is_static ||
+        tau <= time_step / 1024. * (1. + 1e-12))
+      return false;
+    tau /= 2.;
+    time_base   = time;
+    steps_since = 0;
+    return true;
+  }
+
+
+
+  void
+  SimulationControl::save(std::map<std::string, std::string> &state) const
+  {
+    auto exact = [](const double x) {
+      std::ostringstream s;
+      s << std::setprecision(17) << x;
+      return s.str();
+    };
+    state["step"]        = std::to_string(step);
+    state["time"]        = exact(time);
+    state["tau"]         = exact(tau);
+    state["next_output"] = exact(next_output);
+  }
+
+
+
+  void
+  SimulationControl::load(const std::map<std::string, std::string> &state)
+  {
+    step        = std::stoul(state.at("step"));
+    time        = std::stod(state.at("time"));
+    tau         = std::stod(state.at("tau"));
+    next_output = std::stod(state.at("next_output"));
+    // t = t_base + k tau from here on
+    time_base   = time;
+    steps_since = 0;
+  }
+} // namespace dyncontact

@@ -1,0 +1,400 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/simulator.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/output/output_directory.h>
+#include <dyncontact/output/reference_states.h>
+#include <dyncontact/output/vtu_writer.h>
+#include <dyncontact/postprocess/interface.h>
+#include <dyncontact/scenes/interface.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    GlobalParameters::declare_parameters(prm);
+    SemiDiscreteSystem<dim>::Parameters::declare_parameters(prm);
+    SimulationControl::declare_parameters(prm);
+    TimeIntegrator::declare_parameters(prm);
+    Material::declare_parameters(prm, "Material");
+    Material::declare_parameters(prm, "Material of body 2");
+    ActiveSetSolver::Parameters::declare_parameters(prm);
+    ContactSetup<dim>::Parameters::declare_parameters(prm);
+    MeshAdaptor<dim>::declare_parameters(prm);
+    VtuWriter<dim>::declare_parameters(prm);
+    Checkpoints::declare_parameters(prm);
+    ReferenceStates<dim>::declare_parameters(prm);
+    Postprocess::Manager<dim>::declare_parameters(prm);
+    declare_scene_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler  &prm,
+                            const std::string &input_directory,
+                            const MPI_Comm     comm)
+    : comm(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(std::make_unique<TimerOutput>(comm,
+                                          pcout,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times))
+    , control(comm)
+    , scheme(TimeIntegrator::parse_scheme(prm))
+    , triangulation(comm)
+  {
+    parameters.parse_parameters(prm);
+    parameters.input_directory = input_directory;
+    control.parse_parameters(prm, scheme.is_static);
+    solver_parameters.parse_parameters(prm);
+    typename SemiDiscreteSystem<dim>::Parameters system_parameters;
+    system_parameters.parse_parameters(prm);
+    system = std::make_unique<SemiDiscreteSystem<dim>>(system_parameters,
+                                                       mapping,
+                                                       comm);
+    typename ContactSetup<dim>::Parameters contact_parameters;
+    contact_parameters.parse_parameters(prm);
+    contact = std::make_unique<ContactSetup<dim>>(contact_parameters, comm);
+    mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
+    mesh_adaptor->parse_parameters(prm);
+    vtu_writer = std::make_unique<VtuWriter<dim>>();
+    vtu_writer->parse_parameters(prm);
+    reference_states = std::make_unique<ReferenceStates<dim>>();
+    reference_states->parse_parameters(prm);
+    checkpoints.parse_parameters(prm, parameters.output_directory, comm);
+    postprocessors = std::make_unique<Postprocess::Manager<dim>>();
+    postprocessors->parse_parameters(prm);
+    scene = create_scene<dim>(prm, input_directory);
+    contact->check(*scene);
+    AssertThrow(!(mesh_adaptor->adapts_during_run() &&
+                  (reference_states->writes() || reference_states->compares())),
+                ExcMessage(
+                  "Reference solutions need the same mesh in both "
+                  "runs: they cannot be combined with adaptive "
+                  "meshes (Mesh refinement/Refinement interval > 0)."));
+
+    mesh_adaptor->initialize_simulator(*this);
+    vtu_writer->initialize_simulator(*this);
+    reference_states->initialize_simulator(*this);
+    postprocessors->initialize_simulator(*this);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::~Simulator() = default;
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::build_mesh()
+  {
+    TimerOutput::Scope t(*timer, "setup");
+    scene->create_coarse_mesh(triangulation);
+    if (!checkpoints.resume())
+      {
+        triangulation.refine_global(parameters.initial_refinements);
+        scene->refine_initial_mesh(triangulation);
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      AssertThrow(cell->material_id() < scene->n_bodies(),
+                  ExcMessage("A cell of the mesh has material id " +
+                             std::to_string(cell->material_id()) +
+                             ", but the scene has " +
+                             std::to_string(scene->n_bodies()) +
+                             " bodies (ids 0 to n-1)."));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_discretization()
+  {
+    {
+      TimerOutput::Scope t(*timer, "setup");
+      system->setup(triangulation, *scene);
+      pcout << "   cells: " << triangulation.n_global_active_cells()
+            << ", DoFs: " << system->get_dof_handler().n_dofs() << std::endl;
+    }
+    {
+      TimerOutput::Scope t(*timer, "assembly");
+      system->assemble(*scene);
+    }
+    TimerOutput::Scope t(*timer, "contact rows");
+    contact->setup(*scene, *system, mapping, pcout);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_integrator()
+  {
+    TimerOutput::Scope t(*timer, "setup");
+    integrator =
+      std::make_unique<TimeIntegrator>(scheme,
+                                       control.get_timestep(),
+                                       system->matrices(),
+                                       solver_parameters,
+                                       system->locally_owned_dofs(),
+                                       system->locally_relevant_dofs(),
+                                       system->get_constraints(),
+                                       contact->get_rows(),
+                                       system->get_constant_modes(),
+                                       comm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::start()
+  {
+    setup_discretization();
+    // before t = 0: refine the contact zone of the initial state
+    for (unsigned int k = 0; k < mesh_adaptor->n_initial_refinements(); ++k)
+      {
+        system->interpolate_initial_values(*scene, u, udot);
+        mesh_adaptor->mark_contact_zone();
+        triangulation.execute_coarsening_and_refinement();
+        setup_discretization();
+      }
+    system->interpolate_initial_values(*scene, u, udot);
+    make_integrator();
+    postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
+
+    // an initially penetrating configuration (allowed only with 'Initial
+    // penetration = project'): the M-projection onto K_h
+    double largest = 0.;
+    for (const double v : contact->get_row_operator().constraint_values(u))
+      largest = std::max(largest, v);
+    if (largest > 1e-12)
+      {
+        integrator->project_onto_constraints(u);
+        pcout << "   warning: the initial configuration penetrated by up to "
+              << largest << " m; the initial displacement was projected onto "
+              << "K_h." << std::endl;
+      }
+    {
+      TimerOutput::Scope t(*timer, "time step");
+      report = integrator->initialize(u, udot);
+    }
+    AssertThrow(report.converged(),
+                ExcMessage("The initial velocity of " + scheme.name +
+                           " (eq. 12c) could not be computed: " +
+                           report.failure() + "."));
+    record_statistics();
+    if (vtu_writer->is_enabled())
+      vtu_writer->write(0.);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::resume()
+  {
+    const std::string dir   = checkpoints.last_directory();
+    const auto        state = checkpoints.read_state(dir);
+    postprocessors->load(state);
+    triangulation.load(Checkpoints::mesh_file(dir));
+    setup_discretization();
+    system->deserialize(u, udot);
+    control.load(state);
+    make_integrator();
+    integrator->load(state);
+    vtu_writer->load(state);
+    mesh_adaptor->load(state);
+    postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
+    pcout << "   resumed from " << dir << " at step " << control.get_step()
+          << ", t = " << control.get_time() << " s" << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_statistics()
+  {
+    TimerOutput::Scope t(*timer, "diagnostics");
+    postprocessors->execute();
+    reference_states->write(control.get_time());
+    mesh_adaptor->start_new_row();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::refine_mesh()
+  {
+    const double energy_before = system->total_energy(u, udot);
+    {
+      TimerOutput::Scope t(*timer, "mesh adaptation");
+      mesh_adaptor->mark_cells(triangulation);
+      // transfer u and udot to the new mesh (p4est repartitions it)
+      triangulation.prepare_coarsening_and_refinement();
+      system->prepare_for_refinement(u, udot);
+      triangulation.execute_coarsening_and_refinement();
+    }
+    setup_discretization();
+    {
+      TimerOutput::Scope t(*timer, "mesh adaptation");
+      system->interpolate_after_refinement(u, udot);
+    }
+    make_integrator();
+
+    // the transferred displacement may violate the new K_h: back onto it
+    double violation;
+    {
+      TimerOutput::Scope t(*timer, "mesh adaptation");
+      violation =
+        integrator->restore_constraints(u, contact->get_row_operator());
+    }
+    mesh_adaptor->record_transfer(system->total_energy(u, udot) - energy_before,
+                                  violation);
+  }
+
+
+
+  template <int dim>
+  std::string
+  Simulator<dim>::write_checkpoint()
+  {
+    TimerOutput::Scope t(*timer, "checkpoint");
+    const std::string  dir = checkpoints.begin(control.get_step());
+    system->prepare_for_serialization(u, udot);
+    triangulation.save(Checkpoints::mesh_file(dir));
+    std::map<std::string, std::string> state;
+    control.save(state);
+    integrator->save(state);
+    postprocessors->save(state);
+    mesh_adaptor->save(state);
+    vtu_writer->save(state);
+    checkpoints.finish(dir, state);
+    return dir;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::stop_after_failed_step(const bool finite)
+  {
+    const std::string  dir = write_checkpoint();
+    std::ostringstream message;
+    message << std::setprecision(6) << "step " << control.get_step() + 1
+            << " (from t = " << control.get_time()
+            << " s, tau = " << control.get_timestep() << " s) failed: "
+            << (finite && !report.converged() ? report.failure() :
+                                                "the solution is not finite")
+            << ". The last good state (step " << control.get_step()
+            << ") is the checkpoint '" << dir
+            << "' (resume with 'Checkpointing/Resume = true'), or set 'Time "
+               "integration/Time step adaptation = true'.";
+    AssertThrow(false, ExcMessage(message.str()));
+    std::abort();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_time_loop()
+  {
+    pcout << "dyncontact: scene '" << scene->name() << "', " << dim
+          << "D, scheme " << scheme.name << ", "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
+          << std::endl;
+    // the output directory must be writable; nothing in it is touched
+    // before the setup has succeeded
+    prepare_output_directory(parameters.output_directory, comm);
+    build_mesh();
+    if (checkpoints.resume())
+      resume();
+    else
+      start();
+
+    while (control.keep_going())
+      {
+        Timer step_timer;
+        u_old    = u;
+        udot_old = udot;
+        {
+          TimerOutput::Scope t(*timer, "time step");
+          report = integrator->step(u, udot);
+        }
+        const bool finite =
+          std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
+        if (!report.converged() || !finite)
+          {
+            // back to the last good state; retry with a smaller step, or stop
+            u    = u_old;
+            udot = udot_old;
+            if (!control.reduce_timestep())
+              stop_after_failed_step(finite);
+            pcout << "   warning: step " << control.get_step() + 1
+                  << " (t = " << control.get_time()
+                  << " s) failed; retrying with tau = "
+                  << control.get_timestep() << " s" << std::endl;
+            const auto active = integrator->active_sets();
+            make_integrator();
+            integrator->warm_start(active.first, active.second);
+            continue;
+          }
+        control.advance();
+        step_timer.stop();
+        step_wall_time = step_timer.wall_time();
+        record_statistics();
+        if (vtu_writer->is_enabled() && control.output_due())
+          {
+            vtu_writer->write(control.get_time());
+            control.output_written();
+          }
+        if (mesh_adaptor->refinement_due(control.get_step()) &&
+            control.keep_going())
+          refine_mesh();
+        if (control.checkpoint_due())
+          {
+            write_checkpoint();
+            control.checkpoint_written();
+          }
+      }
+    timer->print_summary();
+  }
+
+
+
+  template <int dim>
+  Statistics
+  Simulator<dim>::run()
+  {
+    try
+      {
+        run_time_loop();
+      }
+    catch (...)
+      {
+        // TimerOutput would otherwise print an MPI warning while the
+        // exception unwinds; the user gets the exception's message instead
+        timer.reset();
+        throw;
+      }
+    return postprocessors->get_statistics();
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace dyncontact

@@ -1,0 +1,141 @@
+#include <dyncontact/core/simulator.h>
+#include <dyncontact/core/simulator_access.h>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  SimulatorAccess<dim>::initialize_simulator(const Simulator<dim> &s)
+  {
+    simulator = &s;
+  }
+
+  template <int dim>
+  MPI_Comm
+  SimulatorAccess<dim>::get_mpi_communicator() const
+  {
+    return simulator->comm;
+  }
+
+  template <int dim>
+  const ConditionalOStream &
+  SimulatorAccess<dim>::get_pcout() const
+  {
+    return simulator->pcout;
+  }
+
+  template <int dim>
+  TimerOutput &
+  SimulatorAccess<dim>::get_timer() const
+  {
+    return *simulator->timer;
+  }
+
+  template <int dim>
+  const GlobalParameters &
+  SimulatorAccess<dim>::get_parameters() const
+  {
+    return simulator->parameters;
+  }
+
+  template <int dim>
+  const Scene<dim> &
+  SimulatorAccess<dim>::get_scene() const
+  {
+    return *simulator->scene;
+  }
+
+  template <int dim>
+  const parallel::distributed::Triangulation<dim> &
+  SimulatorAccess<dim>::get_triangulation() const
+  {
+    return simulator->triangulation;
+  }
+
+  template <int dim>
+  const Mapping<dim> &
+  SimulatorAccess<dim>::get_mapping() const
+  {
+    return simulator->mapping;
+  }
+
+  template <int dim>
+  const SemiDiscreteSystem<dim> &
+  SimulatorAccess<dim>::get_system() const
+  {
+    return *simulator->system;
+  }
+
+  template <int dim>
+  const ContactSetup<dim> &
+  SimulatorAccess<dim>::get_contact() const
+  {
+    return *simulator->contact;
+  }
+
+  template <int dim>
+  const TimeIntegrator &
+  SimulatorAccess<dim>::get_integrator() const
+  {
+    return *simulator->integrator;
+  }
+
+  template <int dim>
+  const SimulationControl &
+  SimulatorAccess<dim>::get_control() const
+  {
+    return simulator->control;
+  }
+
+  template <int dim>
+  const VectorType &
+  SimulatorAccess<dim>::get_solution() const
+  {
+    return simulator->u;
+  }
+
+  template <int dim>
+  const VectorType &
+  SimulatorAccess<dim>::get_velocity() const
+  {
+    return simulator->udot;
+  }
+
+  template <int dim>
+  const VectorType &
+  SimulatorAccess<dim>::get_old_solution() const
+  {
+    return simulator->u_old;
+  }
+
+  template <int dim>
+  const StepReport &
+  SimulatorAccess<dim>::get_step_report() const
+  {
+    return simulator->report;
+  }
+
+  template <int dim>
+  double
+  SimulatorAccess<dim>::get_step_wall_time() const
+  {
+    return simulator->step_wall_time;
+  }
+
+  template <int dim>
+  const MeshAdaptor<dim> &
+  SimulatorAccess<dim>::get_mesh_adaptor() const
+  {
+    return *simulator->mesh_adaptor;
+  }
+
+  template <int dim>
+  const ReferenceStates<dim> &
+  SimulatorAccess<dim>::get_reference_states() const
+  {
+    return *simulator->reference_states;
+  }
+
+  template class SimulatorAccess<2>;
+  template class SimulatorAccess<3>;
+} // namespace dyncontact

@@ -1,0 +1,52 @@
+#include <deal.II/base/exceptions.h>
+
+#include <dyncontact/core/statistics.h>
+
+#include <algorithm>
+#include <iomanip>
+
+namespace dyncontact
+{
+  unsigned int
+  Statistics::column_index(const std::string &name) const
+  {
+    const auto it = std::find(columns.begin(), columns.end(), name);
+    AssertThrow(it != columns.end(),
+                dealii::ExcMessage("statistics has no column '" + name + "'"));
+    return it - columns.begin();
+  }
+
+  bool
+  Statistics::has_column(const std::string &name) const
+  {
+    return std::find(columns.begin(), columns.end(), name) != columns.end();
+  }
+
+  std::vector<double>
+  Statistics::column(const std::string &name) const
+  {
+    const unsigned int  c = column_index(name);
+    std::vector<double> values;
+    values.reserve(rows.size());
+    for (const auto &row : rows)
+      values.push_back(row[c]);
+    return values;
+  }
+
+  void
+  Statistics::write_header(std::ostream &out) const
+  {
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      out << (c == 0 ? "" : "\t") << columns[c];
+    out << '\n';
+  }
+
+  void
+  Statistics::write_row(std::ostream &out, const std::vector<double> &row) const
+  {
+    out << std::setprecision(12);
+    for (unsigned int c = 0; c < row.size(); ++c)
+      out << (c == 0 ? "" : "\t") << row[c];
+    out << '\n';
+  }
+} // namespace dyncontact

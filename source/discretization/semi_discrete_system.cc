@@ -1,0 +1,503 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <dyncontact/discretization/semi_discrete_system.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Polynomial degree",
+      "1",
+      Patterns::Integer(1, 4),
+      "Degree p of the displacement space FE_Q(p)^dim, 1 to 4.");
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("Mass matrix",
+                      "lumped",
+                      Patterns::Selection("lumped|consistent"),
+                      "lumped: diagonal, by Gauss-Lobatto (nodal) quadrature; "
+                      "consistent: by Gauss quadrature.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    degree = prm.get_integer("Polynomial degree");
+    prm.enter_subsection("Time integration");
+    lumped_mass = (prm.get("Mass matrix") == "lumped");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  SemiDiscreteSystem<dim>::SemiDiscreteSystem(const Parameters   &parameters,
+                                              const Mapping<dim> &mapping,
+                                              const MPI_Comm      comm)
+    : parameters(parameters)
+    , mapping(mapping)
+    , comm(comm)
+    , fe(FE_Q<dim>(parameters.degree), dim)
+    , scalar_fe(parameters.degree)
+  {}
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::setup(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const Scene<dim>                                &scene)
+  {
+    if (!attached)
+      {
+        // attached only now, after the scene has built and refined its
+        // mesh: a DoF handler without DoFs must not take part in a
+        // refinement of the triangulation
+        dof_handler.reinit(triangulation);
+        scalar_dof_handler.reinit(triangulation);
+        attached = true;
+      }
+    dof_handler.distribute_dofs(fe);
+    scalar_dof_handler.distribute_dofs(scalar_fe);
+    locally_owned = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
+    scalar_locally_owned = scalar_dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(scalar_dof_handler,
+                                            scalar_locally_relevant);
+
+    // hanging nodes and homogeneous Dirichlet data
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const auto &boundary : scene.dirichlet_boundaries())
+      {
+        std::vector<bool> components(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          components[d] = boundary.components[d];
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
+                                                 boundary.id,
+                                                 Functions::ZeroFunction<dim>(
+                                                   dim),
+                                                 constraints,
+                                                 ComponentMask(components));
+      }
+    constraints.close();
+    DoFTools::extract_constant_modes(dof_handler,
+                                     ComponentMask(dim, true),
+                                     constant_modes);
+
+    // M, A, B share the sparsity pattern of the unconstrained operator;
+    // constraints are applied by the active-set solver, not by assembly
+    DynamicSparsityPattern dsp(locally_relevant);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned,
+                                               comm,
+                                               locally_relevant);
+    mass_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    stiffness_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    viscous = scene.is_viscous();
+    if (viscous)
+      viscous_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    else
+      viscous_matrix.clear();
+
+    load.reinit(locally_owned, comm);
+    boundary_weights.reinit(locally_owned, comm);
+    // component-0 system DoF -> scalar DoF of the locally owned nodes
+    owned_system0_to_scalar.clear();
+    {
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> scalar_dofs(
+        scalar_fe.n_dofs_per_cell());
+      auto scalar_cell = scalar_dof_handler.begin_active();
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(dofs);
+              scalar_cell->get_dof_indices(scalar_dofs);
+              for (unsigned int node = 0; node < scalar_dofs.size(); ++node)
+                {
+                  const auto dof0 = dofs[fe.component_to_system_index(0, node)];
+                  if (locally_owned.is_element(dof0))
+                    owned_system0_to_scalar[dof0] = scalar_dofs[node];
+                }
+            }
+          ++scalar_cell;
+        }
+    }
+
+    // locally owned DoFs of each body and component (for the momentum)
+    body_component_dofs.assign(
+      scene.n_bodies(),
+      std::vector<IndexSet>(dim, IndexSet(dof_handler.n_dofs())));
+    {
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (locally_owned.is_element(dofs[i]))
+                body_component_dofs[cell->material_id()]
+                                   [fe.system_to_component_index(i).first]
+                                     .add_index(dofs[i]);
+          }
+      for (auto &body : body_component_dofs)
+        for (auto &set : body)
+          set.compress();
+    }
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::assemble(const Scene<dim> &scene)
+  {
+    const auto tractions   = scene.neumann_tractions();
+    const auto contact_ids = scene.all_contact_boundary_ids();
+
+    const QGauss<dim> quadrature(fe.degree + 1);
+    // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes the
+    // element mass matrix of FE_Q diagonal
+    const Quadrature<dim> mass_quadrature =
+      parameters.lumped_mass ?
+        Quadrature<dim>(QGaussLobatto<dim>(fe.degree + 1)) :
+        Quadrature<dim>(QGauss<dim>(fe.degree + 1));
+    const QGauss<dim - 1>        face_quadrature(fe.degree + 1);
+    const QGaussLobatto<dim - 1> lumped_face_quadrature(fe.degree + 1);
+
+    FEValues<dim>     fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    FEValues<dim>     mass_values(mapping,
+                              fe,
+                              mass_quadrature,
+                              update_values | update_JxW_values);
+    FEFaceValues<dim> face_values(mapping,
+                                  fe,
+                                  face_quadrature,
+                                  update_values | update_JxW_values);
+    FEFaceValues<dim> lumped_face_values(mapping,
+                                         fe,
+                                         lumped_face_quadrature,
+                                         update_values | update_JxW_values);
+
+    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    std::vector<double> bad_cell; // centre and body of an inverted cell
+    FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double>  cell_stiffness(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double>  cell_viscous(dofs_per_cell, dofs_per_cell);
+    Vector<double>      cell_load(dofs_per_cell);
+    Vector<double>      cell_boundary_weights(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
+    std::vector<double>                  div(dofs_per_cell);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_mass                  = 0.;
+          cell_stiffness             = 0.;
+          cell_viscous               = 0.;
+          cell_load                  = 0.;
+          cell_boundary_weights      = 0.;
+          const Material &material   = scene.material(cell->material_id());
+          const double    mu         = material.mu();
+          const double    lambda     = material.lambda();
+          const double    rho        = material.density;
+          const auto      body_force = scene.body_force(cell->material_id());
+          fe_values.reinit(cell);
+          mass_values.reinit(cell);
+          // an inverted or twisted cell (which deal.II does not reject on
+          // reading) has a non-positive Jacobian somewhere
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            if (!(fe_values.JxW(q) > 0.) && bad_cell.empty())
+              {
+                for (unsigned int d = 0; d < dim; ++d)
+                  bad_cell.push_back(cell->center()[d]);
+                bad_cell.push_back(cell->material_id() + 1);
+              }
+
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  div[i] = fe_values[displacement].divergence(i, q);
+                }
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    {
+                      const double ee = eps[i] * eps[j];
+                      const double dd = div[i] * div[j];
+                      cell_stiffness(i, j) +=
+                        (2. * mu * ee + lambda * dd) * JxW;
+                      if (material.is_viscous())
+                        cell_viscous(i, j) +=
+                          (2. * material.viscous_shear_modulus * ee +
+                           material.viscous_lambda * dd) *
+                          JxW;
+                    }
+                  cell_load(i) +=
+                    fe_values[displacement].value(i, q) * body_force * JxW;
+                }
+            }
+          for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                cell_mass(i, j) += rho *
+                                   (mass_values[displacement].value(i, q) *
+                                    mass_values[displacement].value(j, q)) *
+                                   mass_values.JxW(q);
+
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const auto id = cell->face(f)->boundary_id();
+                for (const auto &[traction_id, traction] : tractions)
+                  if (traction_id == id)
+                    {
+                      face_values.reinit(cell, f);
+                      for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                          cell_load(i) +=
+                            face_values[displacement].value(i, q) * traction *
+                            face_values.JxW(q);
+                    }
+                if (std::find(contact_ids.begin(), contact_ids.end(), id) !=
+                    contact_ids.end())
+                  {
+                    // w_p = int psi_p ds, by nodal quadrature (positive)
+                    lumped_face_values.reinit(cell, f);
+                    for (unsigned int q = 0; q < lumped_face_quadrature.size();
+                         ++q)
+                      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                        {
+                          const unsigned int c =
+                            fe.system_to_component_index(i).first;
+                          cell_boundary_weights(i) +=
+                            lumped_face_values.shape_value_component(i, q, c) *
+                            lumped_face_values.JxW(q);
+                        }
+                  }
+              }
+
+          cell->get_dof_indices(dof_indices);
+          mass_matrix.add(dof_indices, cell_mass);
+          stiffness_matrix.add(dof_indices, cell_stiffness);
+          if (viscous)
+            viscous_matrix.add(dof_indices, cell_viscous);
+          load.add(dof_indices, cell_load);
+          boundary_weights.add(dof_indices, cell_boundary_weights);
+        }
+
+    mass_matrix.compress(VectorOperation::add);
+    stiffness_matrix.compress(VectorOperation::add);
+    for (const auto &rank_bad : Utilities::MPI::all_gather(comm, bad_cell))
+      if (!rank_bad.empty())
+        {
+          std::ostringstream where;
+          where << "(" << rank_bad[0];
+          for (unsigned int d = 1; d < dim; ++d)
+            where << ", " << rank_bad[d];
+          where << ")";
+          AssertThrow(false,
+                      ExcMessage("The mesh has an inverted or twisted cell "
+                                 "(non-positive Jacobian) at " +
+                                 where.str() + " in body " +
+                                 std::to_string(int(rank_bad[dim])) +
+                                 "; check the mesh (file) and the order of "
+                                 "the cell's vertices."));
+        }
+    if (viscous)
+      viscous_matrix.compress(VectorOperation::add);
+    load.compress(VectorOperation::add);
+    boundary_weights.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::interpolate_initial_values(const Scene<dim> &scene,
+                                                      VectorType       &u,
+                                                      VectorType &udot) const
+  {
+    reinit_vector(u);
+    reinit_vector(udot);
+    // nodal interpolation, cell by cell, so that each body gets its own data
+    // (bodies share no nodes)
+    const auto &unit_points = scalar_fe.get_unit_support_points();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int node = 0; node < unit_points.size(); ++node)
+            {
+              const Point<dim> x =
+                mapping.transform_unit_to_real_cell(cell, unit_points[node]);
+              const Tensor<1, dim> u0 =
+                scene.initial_displacement(x, cell->material_id());
+              const Tensor<1, dim> v0 =
+                scene.initial_velocity(x, cell->material_id());
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const auto dof = dofs[fe.component_to_system_index(d, node)];
+                  if (locally_owned.is_element(dof))
+                    {
+                      u(dof)    = u0[d];
+                      udot(dof) = v0[d];
+                    }
+                }
+            }
+        }
+    u.compress(VectorOperation::insert);
+    udot.compress(VectorOperation::insert);
+    // hanging nodes follow their parents, Dirichlet nodes are fixed
+    constraints.distribute(u);
+    constraints.distribute(udot);
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::reinit_vector(VectorType &v) const
+  {
+    v.reinit(locally_owned, comm);
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  SemiDiscreteSystem<dim>::energies(const VectorType &u,
+                                    const VectorType &udot,
+                                    VectorType       &M_udot) const
+  {
+    mass_matrix.vmult(M_udot, udot);
+    const double kinetic = 0.5 * (M_udot * udot);
+    VectorType   Au(u);
+    stiffness_matrix.vmult(Au, u);
+    return {kinetic, 0.5 * (Au * u) - load * u};
+  }
+
+
+
+  template <int dim>
+  double
+  SemiDiscreteSystem<dim>::total_energy(const VectorType &u,
+                                        const VectorType &udot) const
+  {
+    VectorType M_udot(udot);
+    const auto [kinetic, elastic] = energies(u, udot, M_udot);
+    return kinetic + elastic;
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::prepare_for_refinement(const VectorType &u,
+                                                  const VectorType &udot)
+  {
+    transferred.assign(2, VectorType(locally_owned, locally_relevant, comm));
+    transferred[0] = u;
+    transferred[1] = udot;
+    transfer       = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
+    transfer->prepare_for_coarsening_and_refinement(
+      std::vector<const VectorType *>{&transferred[0], &transferred[1]});
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::interpolate_after_refinement(VectorType &u,
+                                                        VectorType &udot)
+  {
+    reinit_vector(u);
+    reinit_vector(udot);
+    std::vector<VectorType *> out = {&u, &udot};
+    transfer->interpolate(out);
+    transfer.reset();
+    transferred.clear();
+    constraints.distribute(u);
+    constraints.distribute(udot);
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::prepare_for_serialization(const VectorType &u,
+                                                     const VectorType &udot)
+  {
+    transferred.assign(2, VectorType(locally_owned, locally_relevant, comm));
+    transferred[0] = u;
+    transferred[1] = udot;
+    transfer       = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
+    transfer->prepare_for_serialization(
+      std::vector<const VectorType *>{&transferred[0], &transferred[1]});
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::deserialize(VectorType &u, VectorType &udot)
+  {
+    reinit_vector(u);
+    reinit_vector(udot);
+    parallel::distributed::SolutionTransfer<dim, VectorType> loader(
+      dof_handler);
+    std::vector<VectorType *> out = {&u, &udot};
+    loader.deserialize(out);
+  }
+
+
+
+  template <int dim>
+  SystemMatrices
+  SemiDiscreteSystem<dim>::matrices() const
+  {
+    return {&mass_matrix,
+            &stiffness_matrix,
+            viscous ? &viscous_matrix : nullptr,
+            &load,
+            parameters.lumped_mass};
+  }
+
+  template class SemiDiscreteSystem<2>;
+  template class SemiDiscreteSystem<3>;
+} // namespace dyncontact

@@ -1,0 +1,98 @@
+// The contact zone: the cells at slave nodes whose current gap g_p - (C u)_p
+// is below the contact-zone distance, and at the master nodes of their
+// images, are refined (on both bodies, up to the maximum level) whatever
+// the indicators say.
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/mesh_refinement/interface.h>
+#include <dyncontact/mesh_refinement/mesh_adaptor.h>
+
+#include <cmath>
+#include <set>
+
+namespace dyncontact
+{
+  namespace MeshRefinement
+  {
+    template <int dim>
+    class ContactZone : public Interface<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Mesh refinement");
+        prm.declare_entry("Contact zone distance",
+                          "0",
+                          Patterns::Double(0.),
+                          "A slave node is in the contact zone when its "
+                          "current gap is below this distance, in m; 0: two "
+                          "cell sizes at the node.");
+        prm.leave_subsection();
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Mesh refinement");
+        distance = prm.get_double("Contact zone distance");
+        prm.leave_subsection();
+      }
+
+      void
+      tag_additional_cells() const override
+      {
+        const ContactRows                &rows = this->get_contact().get_rows();
+        std::set<types::global_dof_index> zone;
+        const auto                        violation =
+          this->get_contact().get_row_operator().constraint_values(
+            this->get_solution());
+        for (unsigned int p = 0; p < rows.size(); ++p)
+          {
+            const double size = std::pow(rows.rows[p].weight, 1. / (dim - 1));
+            if (-violation[p] < std::max(distance, 2. * size))
+              {
+                zone.insert(rows.rows[p].entries[0].first);
+                for (const auto &[dof0, N] : rows.rows[p].master_nodes)
+                  zone.insert(dof0);
+              }
+          }
+
+        const SemiDiscreteSystem<dim> &system = this->get_system();
+        const unsigned int max_level = this->get_mesh_adaptor().get_max_level();
+        std::vector<types::global_dof_index> dofs(
+          system.get_fe().n_dofs_per_cell());
+        for (const auto &cell :
+             system.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int node = 0;
+                   node < system.get_scalar_fe().n_dofs_per_cell();
+                   ++node)
+                if (zone.count(
+                      dofs[system.get_fe().component_to_system_index(0, node)]))
+                  {
+                    cell->clear_coarsen_flag();
+                    if (cell->level() < int(max_level))
+                      cell->set_refine_flag();
+                    break;
+                  }
+            }
+      }
+
+    private:
+      double distance = 0.;
+    };
+
+    DYNCONTACT_REGISTER_REFINEMENT_CRITERION(ContactZone,
+                                             "contact zone",
+                                             30,
+                                             "the cells near slave nodes "
+                                             "close to contact and at their "
+                                             "images, always refined")
+  } // namespace MeshRefinement
+} // namespace dyncontact

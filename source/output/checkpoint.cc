@@ -1,0 +1,196 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <dyncontact/output/checkpoint.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace dyncontact
+{
+  void
+  Checkpoints::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpointing");
+    prm.declare_entry("Resume",
+                      "false",
+                      Patterns::Bool(),
+                      "Continue from the last good checkpoint in <Output "
+                      "directory>/checkpoints. The prm must agree with the "
+                      "checkpoint's in everything but End time, subsection "
+                      "Output and subsection Checkpointing.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Checkpoints::parse_parameters(ParameterHandler  &prm,
+                                const std::string &output_directory,
+                                const MPI_Comm     communicator)
+  {
+    root = output_directory + "/checkpoints";
+    comm = communicator;
+    prm.enter_subsection("Checkpointing");
+    resume_run = prm.get_bool("Resume");
+    prm.leave_subsection();
+
+    // the critical parameters: the whole input in a canonical form, less
+    // what a resumed run may change
+    critical_parameters.clear();
+    std::ostringstream all;
+    prm.print_parameters(all, ParameterHandler::ShortPRM);
+    std::istringstream       in(all.str());
+    std::vector<std::string> path;
+    for (std::string line; std::getline(in, line);)
+      {
+        const auto first = line.find_first_not_of(' ');
+        if (first == std::string::npos)
+          continue;
+        line = line.substr(first);
+        if (line.rfind("subsection ", 0) == 0)
+          path.push_back(line.substr(11));
+        else if (line == "end")
+          path.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+          {
+            const std::string entry = line.substr(4, line.find('=') - 4);
+            // a resumed run may change the end time, the output, the
+            // checkpointing, and the solver's limits (to get past a step
+            // that failed)
+            auto is = [&](const std::string &section, const std::string &name) {
+              return path.size() == 1 && path[0] == section &&
+                     entry.rfind(name, 0) == 0;
+            };
+            const bool skip =
+              (!path.empty() &&
+               (path[0] == "Output" || path[0] == "Checkpointing")) ||
+              (path.empty() && entry.rfind("Output directory", 0) == 0) ||
+              is("Time integration", "End time") ||
+              is("Time integration", "Time step adaptation") ||
+              is("Contact solver", "Maximum active-set iterations") ||
+              is("Contact solver", "Maximum linear iterations");
+            if (!skip)
+              {
+                std::string name;
+                for (const auto &p : path)
+                  name += p + "/";
+                critical_parameters += name + line.substr(4) + "\n";
+              }
+          }
+      }
+  }
+
+
+
+  std::string
+  Checkpoints::begin(const unsigned int step) const
+  {
+    const std::string dir = root + "/step_" + Utilities::int_to_string(step, 7);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir);
+      }
+    MPI_Barrier(comm);
+    return dir;
+  }
+
+
+
+  void
+  Checkpoints::finish(const std::string                        &dir,
+                      const std::map<std::string, std::string> &state) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        // key, length, value: values may hold anything (lines, spaces)
+        std::ofstream out(dir + "/state.txt");
+        out << "dyncontact-checkpoint 1\n";
+        for (const auto &[key, value] : state)
+          out << key << " " << value.size() << "\n" << value << "\n";
+        out << "critical_parameters " << critical_parameters.size() << "\n"
+            << critical_parameters << "\n";
+        out.close();
+        AssertThrow(out.good(),
+                    ExcMessage("Cannot write the checkpoint '" + dir + "'."));
+        // mark it as the last good checkpoint (atomically), then remove all
+        // but the previous one
+        const std::string name = std::filesystem::path(dir).filename();
+        std::string       previous;
+        if (std::ifstream last(root + "/last"); last.good())
+          std::getline(last, previous);
+        std::ofstream(root + "/last.tmp") << name << "\n";
+        std::filesystem::rename(root + "/last.tmp", root + "/last");
+        for (const auto &entry : std::filesystem::directory_iterator(root))
+          if (entry.is_directory() && entry.path().filename() != name &&
+              entry.path().filename() != previous)
+            std::filesystem::remove_all(entry.path());
+      }
+    MPI_Barrier(comm);
+  }
+
+
+
+  std::string
+  Checkpoints::last_directory() const
+  {
+    std::string   name;
+    std::ifstream last(root + "/last");
+    AssertThrow(last.good(),
+                ExcMessage("Checkpointing/Resume: there is no checkpoint in '" +
+                           root +
+                           "' (the file 'last' that marks the last good "
+                           "one is missing)."));
+    std::getline(last, name);
+    return root + "/" + name;
+  }
+
+
+
+  std::map<std::string, std::string>
+  Checkpoints::read_state(const std::string &dir) const
+  {
+    std::ifstream in(dir + "/state.txt");
+    AssertThrow(in.good(),
+                ExcMessage("Checkpointing/Resume: the checkpoint '" + dir +
+                           "' has no readable state.txt."));
+    const auto  damaged = ExcMessage("Checkpointing/Resume: the checkpoint '" +
+                                    dir + "' is damaged.");
+    std::string header;
+    std::getline(in, header);
+    AssertThrow(header == "dyncontact-checkpoint 1", damaged);
+    std::map<std::string, std::string> state;
+    std::string                        key;
+    std::size_t                        length = 0;
+    while (in >> key >> length)
+      {
+        AssertThrow(length < (std::size_t(1) << 32), damaged);
+        in.get();
+        std::string value(length, '\0');
+        in.read(value.data(), length);
+        AssertThrow(in.good() && in.get() == '\n', damaged);
+        state[key] = value;
+      }
+    AssertThrow(state.count("critical_parameters"), damaged);
+
+    // refuse a prm whose critical parameters differ
+    const std::string &saved = state["critical_parameters"];
+    if (saved != critical_parameters)
+      {
+        std::istringstream a(saved), b(critical_parameters);
+        std::string        la, lb;
+        while (std::getline(a, la) && std::getline(b, lb) && la == lb)
+          ;
+        AssertThrow(false,
+                    ExcMessage("Checkpointing/Resume: this input differs from "
+                               "the checkpoint's in a parameter that must not "
+                               "change (everything but End time, Output and "
+                               "Checkpointing may not): the checkpoint has '" +
+                               la + "', this input '" + lb + "'."));
+      }
+    return state;
+  }
+} // namespace dyncontact

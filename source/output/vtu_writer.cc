@@ -1,0 +1,235 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/parameters.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/output/vtu_writer.h>
+#include <dyncontact/time_stepping/integrators.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  namespace
+  {
+    /// Von Mises stress of the elastic stress 2 mu eps + lambda tr(eps) I.
+    template <int dim>
+    class VonMisesPostprocessor : public DataPostprocessorScalar<dim>
+    {
+    public:
+      explicit VonMisesPostprocessor(const Scene<dim> &scene)
+        : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
+        , scene(scene)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        const auto      cell     = inputs.template get_cell<dim>();
+        const Material &material = scene.material(cell->material_id());
+        const double    mu = material.mu(), lambda = material.lambda();
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+          {
+            Tensor<2, dim> grad;
+            for (unsigned int d = 0; d < dim; ++d)
+              grad[d] = inputs.solution_gradients[q][d];
+            const SymmetricTensor<2, dim> eps = symmetrize(grad);
+            SymmetricTensor<2, 3>         sigma;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                sigma[i][j] = 2. * mu * eps[i][j];
+            for (unsigned int i = 0; i < 3; ++i)
+              sigma[i][i] += lambda * trace(eps);
+            const SymmetricTensor<2, 3> s = deviator(sigma);
+            computed_quantities[q](0)     = std::sqrt(1.5 * (s * s));
+          }
+      }
+
+    private:
+      const Scene<dim> &scene;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  VtuWriter<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Write vtu",
+                      "true",
+                      Patterns::Bool(),
+                      "Whether to write VTU/PVTU files and solution.pvd.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  VtuWriter<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    write_vtu = prm.get_bool("Write vtu");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  VtuWriter<dim>::write(const double time)
+  {
+    TimerOutput::Scope             t(this->get_timer(), "output");
+    const SemiDiscreteSystem<dim> &system = this->get_system();
+    const StepReport              &report = this->get_step_report();
+    const ContactRows             &rows   = this->get_contact().get_rows();
+    const auto    &row_scalar_dofs = this->get_contact().get_row_scalar_dofs();
+    const MPI_Comm comm            = this->get_mpi_communicator();
+    const auto    &scalar_locally_owned = system.scalar_locally_owned_dofs();
+    const auto &scalar_locally_relevant = system.scalar_locally_relevant_dofs();
+    const auto &triangulation           = this->get_triangulation();
+
+    VectorType u_ghosted(system.locally_owned_dofs(),
+                         system.locally_relevant_dofs(),
+                         comm);
+    VectorType v_ghosted(u_ghosted);
+    u_ghosted = this->get_solution();
+    v_ghosted = this->get_velocity();
+
+    // nodal contact fields on the scalar FE_Q: pressure on both sides (the
+    // master side gets each row's force through the weights N_j of its
+    // image point), active and critical sets and the current gap
+    // g_p - (C u)_p on the slave side
+    const double factor = this->get_integrator().force_factor();
+    VectorType   master_force(system.locally_owned_dofs(), comm);
+    const auto   violation =
+      this->get_contact().get_row_operator().constraint_values(
+        this->get_solution());
+    TrilinosWrappers::MPI::Vector pressure(scalar_locally_owned, comm),
+      active(scalar_locally_owned, comm), critical(scalar_locally_owned, comm),
+      gap(scalar_locally_owned, comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    for (unsigned int p = 0; p < rows.size(); ++p)
+      if (rows.rows[p].owner == my_rank)
+        {
+          const double force =
+            report.active[p] ? factor * report.multipliers[p] : 0.;
+          pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
+          active(row_scalar_dofs[p])   = report.active[p];
+          critical(row_scalar_dofs[p]) = report.critical[p];
+          gap(row_scalar_dofs[p])      = -violation[p];
+          for (const auto &[dof0, N] : rows.rows[p].master_nodes)
+            master_force(dof0) += N * force;
+        }
+    master_force.compress(VectorOperation::add);
+    for (const auto &[dof0, scalar_dof] : system.get_owned_system0_to_scalar())
+      if (master_force(dof0) != 0.)
+        pressure(scalar_dof) =
+          master_force(dof0) / system.get_boundary_weights()(dof0);
+    pressure.compress(VectorOperation::insert);
+    active.compress(VectorOperation::insert);
+    critical.compress(VectorOperation::insert);
+    gap.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector pressure_g(scalar_locally_owned,
+                                             scalar_locally_relevant,
+                                             comm),
+      active_g(pressure_g), critical_g(pressure_g), gap_g(pressure_g);
+    pressure_g = pressure;
+    active_g   = active;
+    critical_g = critical;
+    gap_g      = gap;
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(triangulation);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim,
+                   DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(system.get_dof_handler(),
+                             u_ghosted,
+                             std::vector<std::string>(dim, "displacement"),
+                             vector_field);
+    data_out.add_data_vector(system.get_dof_handler(),
+                             v_ghosted,
+                             std::vector<std::string>(dim, "velocity"),
+                             vector_field);
+    const VonMisesPostprocessor<dim> von_mises(this->get_scene());
+    data_out.add_data_vector(system.get_dof_handler(), u_ghosted, von_mises);
+    data_out.add_data_vector(system.get_scalar_dof_handler(),
+                             pressure_g,
+                             "contact_pressure");
+    data_out.add_data_vector(system.get_scalar_dof_handler(),
+                             active_g,
+                             "active_set");
+    data_out.add_data_vector(system.get_scalar_dof_handler(),
+                             critical_g,
+                             "critical_set");
+    if (!this->get_scene().contact_pairs().empty())
+      data_out.add_data_vector(system.get_scalar_dof_handler(), gap_g, "gap");
+    Vector<float> subdomain(triangulation.n_active_cells());
+    for (auto &s : subdomain)
+      s = triangulation.locally_owned_subdomain();
+    data_out.add_data_vector(subdomain, "subdomain");
+    Vector<float> level(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        level(cell->active_cell_index()) = cell->level();
+    data_out.add_data_vector(level, "refinement_level");
+    data_out.build_patches(this->get_mapping(), system.get_fe().degree);
+
+    const std::string directory = this->get_parameters().output_directory;
+    const std::string pvtu      = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "solution", output_counter, comm, 5);
+    ++output_counter;
+    pvd_records.emplace_back(time, pvtu);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream pvd(directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  VtuWriter<dim>::save(std::map<std::string, std::string> &state) const
+  {
+    std::ostringstream s;
+    s << std::setprecision(17) << output_counter << " " << pvd_records.size()
+      << "\n";
+    for (const auto &[t, file] : pvd_records)
+      s << t << " " << file << "\n";
+    state["vtu_output"] = s.str();
+  }
+
+
+
+  template <int dim>
+  void
+  VtuWriter<dim>::load(const std::map<std::string, std::string> &state)
+  {
+    std::istringstream s(state.at("vtu_output"));
+    std::size_t        n = 0;
+    s >> output_counter >> n;
+    AssertThrow(!s.fail() && n <= output_counter,
+                ExcMessage("the output history in the checkpoint is damaged"));
+    pvd_records.resize(n);
+    for (auto &[t, file] : pvd_records)
+      s >> t >> file;
+    AssertThrow(!s.fail(),
+                ExcMessage("the output history in the checkpoint is damaged"));
+  }
+
+  template class VtuWriter<2>;
+  template class VtuWriter<3>;
+} // namespace dyncontact

@@ -1,0 +1,95 @@
+// The error in the physical energy norm against the scene's exact solution
+// (eqs. 22-24): ||(e, edot)||_E^2 = 1/2 ||edot||^2_{L2(rho)} + 1/2 a(e, e).
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/postprocess/interface.h>
+#include <dyncontact/scenes/interface.h>
+
+#include <cmath>
+
+namespace dyncontact
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    class ErrorNorm : public Interface<dim>
+    {
+    public:
+      bool
+      applies() const override
+      {
+        return this->get_scene().has_exact_solution();
+      }
+
+      std::vector<std::string>
+      columns() const override
+      {
+        return {"error_energy_norm"};
+      }
+
+      void
+      execute(std::vector<double> &row) override
+      {
+        const SemiDiscreteSystem<dim> &system = this->get_system();
+        const Scene<dim>              &scene  = this->get_scene();
+        const double                   time   = this->get_control().get_time();
+        const MPI_Comm                 comm   = this->get_mpi_communicator();
+        // the exact solution has kinks and jumps inside cells: an iterated
+        // Gauss rule (no point at cell or sub-cell midpoints) integrates
+        // them robustly
+        const QIterated<dim> quadrature(QGauss<1>(system.get_fe().degree + 1),
+                                        2);
+        FEValues<dim>        fe_values(this->get_mapping(),
+                                system.get_fe(),
+                                quadrature,
+                                update_values | update_gradients |
+                                  update_quadrature_points | update_JxW_values);
+        VectorType           u_ghosted(system.locally_owned_dofs(),
+                             system.locally_relevant_dofs(),
+                             comm);
+        VectorType           v_ghosted(u_ghosted);
+        u_ghosted = this->get_solution();
+        v_ghosted = this->get_velocity();
+
+        const FEValuesExtractors::Vector displacement(0);
+        std::vector<Tensor<1, dim>>      vh(quadrature.size());
+        std::vector<Tensor<2, dim>>      grad_uh(quadrature.size());
+        double                           local = 0.;
+        for (const auto &cell :
+             system.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const Material &material = scene.material(cell->material_id());
+              fe_values.reinit(cell);
+              fe_values[displacement].get_function_values(v_ghosted, vh);
+              fe_values[displacement].get_function_gradients(u_ghosted,
+                                                             grad_uh);
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  const ExactValues<dim> exact =
+                    scene.exact_solution(fe_values.quadrature_point(q), time);
+                  const Tensor<1, dim>          edot = exact.velocity - vh[q];
+                  const SymmetricTensor<2, dim> eps =
+                    symmetrize(exact.displacement_gradient - grad_uh[q]);
+                  local +=
+                    (0.5 * material.density * (edot * edot) +
+                     0.5 * (2. * material.mu() * (eps * eps) +
+                            material.lambda() * trace(eps) * trace(eps))) *
+                    fe_values.JxW(q);
+                }
+            }
+        row.push_back(std::sqrt(Utilities::MPI::sum(local, comm)));
+      }
+    };
+
+    DYNCONTACT_REGISTER_POSTPROCESSOR(ErrorNorm,
+                                      "error energy norm",
+                                      100,
+                                      "energy-norm error against the exact "
+                                      "solution (eqs. 22-24)")
+  } // namespace Postprocess
+} // namespace dyncontact

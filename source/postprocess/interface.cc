@@ -1,0 +1,142 @@
+#include <deal.II/base/utilities.h>
+
+#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/postprocess/interface.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  template class PluginRegistry<Postprocess::Interface>;
+
+  namespace Postprocess
+  {
+    template <int dim>
+    void
+    Manager<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      PluginRegistry<Interface>::declare_parameters(prm);
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      postprocessors.clear();
+      for (const auto &info : PluginRegistry<Interface>::plugins())
+        {
+          postprocessors.push_back(info.template create<dim>());
+          postprocessors.back()->parse_parameters(prm);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::initialize_simulator(const Simulator<dim> &simulator)
+    {
+      SimulatorAccess<dim>::initialize_simulator(simulator);
+      std::vector<std::unique_ptr<Interface<dim>>> applicable;
+      statistics.columns = {"step", "time"};
+      for (auto &postprocessor : postprocessors)
+        {
+          postprocessor->initialize_simulator(simulator);
+          if (postprocessor->applies())
+            {
+              for (const auto &column : postprocessor->columns())
+                statistics.columns.push_back(column);
+              applicable.push_back(std::move(postprocessor));
+            }
+        }
+      postprocessors = std::move(applicable);
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::open_file(const std::string &name)
+    {
+      if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) != 0)
+        return;
+      file.open(name);
+      statistics.write_header(file);
+      for (const auto &row : statistics.rows)
+        statistics.write_row(file, row);
+      file.flush();
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::execute()
+    {
+      std::vector<double> row = {double(this->get_control().get_step()),
+                                 this->get_control().get_time()};
+      for (auto &postprocessor : postprocessors)
+        postprocessor->execute(row);
+      Assert(row.size() == statistics.columns.size(), ExcInternalError());
+      statistics.rows.push_back(row);
+      if (file.is_open())
+        {
+          statistics.write_row(file, row);
+          file.flush();
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::save(std::map<std::string, std::string> &state) const
+    {
+      std::ostringstream rows;
+      rows << std::setprecision(17) << statistics.rows.size() << "\n";
+      for (const auto &row : statistics.rows)
+        {
+          for (unsigned int c = 0; c < row.size(); ++c)
+            rows << (c ? " " : "") << row[c];
+          rows << "\n";
+        }
+      state["statistics"] = rows.str();
+      for (const auto &postprocessor : postprocessors)
+        postprocessor->save(state);
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::load(const std::map<std::string, std::string> &state)
+    {
+      std::istringstream rows(state.at("statistics"));
+      std::size_t        n_rows = 0;
+      rows >> n_rows;
+      AssertThrow(!rows.fail() && n_rows <= 100000000,
+                  ExcMessage("the statistics in the checkpoint are damaged"));
+      statistics.rows.assign(n_rows,
+                             std::vector<double>(statistics.columns.size()));
+      // token by token: std::stod reads nan and inf, operator>> does not
+      std::string token;
+      for (auto &row : statistics.rows)
+        for (double &value : row)
+          {
+            rows >> token;
+            AssertThrow(!rows.fail(),
+                        ExcMessage(
+                          "the statistics in the checkpoint are damaged"));
+            value = std::stod(token);
+          }
+      for (auto &postprocessor : postprocessors)
+        postprocessor->load(state);
+    }
+
+    template class Manager<2>;
+    template class Manager<3>;
+  } // namespace Postprocess
+} // namespace dyncontact

@@ -1,0 +1,42 @@
+// The error in the physical energy norm against the states of a reference
+// run (same mesh, smaller tau) at the reference times, NaN in between.
+
+#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/output/reference_states.h>
+#include <dyncontact/postprocess/interface.h>
+
+namespace dyncontact
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    class ReferenceError : public Interface<dim>
+    {
+    public:
+      bool
+      applies() const override
+      {
+        return this->get_reference_states().compares();
+      }
+
+      std::vector<std::string>
+      columns() const override
+      {
+        return {"error_reference"};
+      }
+
+      void
+      execute(std::vector<double> &row) override
+      {
+        row.push_back(
+          this->get_reference_states().error(this->get_control().get_time()));
+      }
+    };
+
+    DYNCONTACT_REGISTER_POSTPROCESSOR(ReferenceError,
+                                      "reference error",
+                                      90,
+                                      "energy-norm error against reference "
+                                      "states")
+  } // namespace Postprocess
+} // namespace dyncontact

@@ -1,0 +1,43 @@
+// Solver effort of the step: active-set iterations of the displacement step
+// and of the projection, CG iterations of both, and the wall time.
+
+#include <dyncontact/postprocess/interface.h>
+#include <dyncontact/time_stepping/integrators.h>
+
+namespace dyncontact
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    class SolverEffort : public Interface<dim>
+    {
+    public:
+      std::vector<std::string>
+      columns() const override
+      {
+        return {"active_set_iterations",
+                "projection_iterations",
+                "linear_iterations",
+                "step_wall_time"};
+      }
+
+      void
+      execute(std::vector<double> &row) override
+      {
+        const StepReport &report = this->get_step_report();
+        row.insert(row.end(),
+                   {double(report.displacement_solve.iterations),
+                    double(report.projection_solve.iterations),
+                    double(report.displacement_solve.linear_iterations +
+                           report.projection_solve.linear_iterations),
+                    this->get_step_wall_time()});
+      }
+    };
+
+    DYNCONTACT_REGISTER_POSTPROCESSOR(SolverEffort,
+                                      "solver effort",
+                                      60,
+                                      "active-set and CG iterations, wall "
+                                      "time of the step")
+  } // namespace Postprocess
+} // namespace dyncontact

@@ -1,0 +1,317 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <dyncontact/scenes/gmsh_scene.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace dyncontact
+{
+  namespace
+  {
+    std::set<unsigned int>
+    parse_tags(const std::string &text, const std::string &entry)
+    {
+      std::set<unsigned int> tags;
+      for (const auto &item : Utilities::split_string_list(text, ','))
+        {
+          const int tag = Utilities::string_to_int(item);
+          AssertThrow(tag >= 0,
+                      ExcMessage("Scene/Gmsh/" + entry +
+                                 " must be a comma-separated list of "
+                                 "non-negative physical tags; got '" +
+                                 text + "'."));
+          tags.insert(tag);
+        }
+      return tags;
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    parse_vector(const std::string &text, const std::string &entry)
+    {
+      const auto items = Utilities::split_string_list(text, ',');
+      AssertThrow(
+        items.size() == dim || (dim == 2 && items.size() == 3),
+        ExcMessage("Scene/Gmsh/" + entry + " must have " + std::to_string(dim) +
+                   " comma-separated components; got '" + text + "'."));
+      Tensor<1, dim> v;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          v[d] = Utilities::string_to_double(items[d]);
+          AssertThrow(std::isfinite(v[d]),
+                      ExcMessage("Scene/Gmsh/" + entry +
+                                 " must have finite components; got '" + text +
+                                 "'."));
+        }
+      return v;
+    }
+
+    std::string
+    to_list(const std::set<unsigned int> &tags)
+    {
+      std::string text;
+      for (const auto tag : tags)
+        text += (text.empty() ? "" : ", ") + std::to_string(tag);
+      return text;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.enter_subsection("Gmsh");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "The .msh file (quadrilaterals in 2D, hexahedra in "
+                      "3D); a relative path is relative to the folder of the "
+                      "prm file.");
+    prm.declare_entry("Body 1 tags",
+                      "1",
+                      Patterns::Anything(),
+                      "Physical tags (comma-separated) of the cells of "
+                      "body 1.");
+    prm.declare_entry("Body 2 tags",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of the cells of body 2; empty for "
+                      "a one-body mesh.");
+    prm.declare_entry("Dirichlet tags",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of clamped boundaries (all "
+                      "displacement components zero).");
+    prm.declare_entry("Neumann tags",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of boundaries loaded by the "
+                      "Neumann traction.");
+    prm.declare_entry("Neumann traction",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "The traction on the Neumann boundaries, "
+                      "components in Pa.");
+    prm.declare_entry("Contact tags of body 1",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of the possible contact boundary "
+                      "of body 1.");
+    prm.declare_entry("Contact tags of body 2",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of the possible contact boundary "
+                      "of body 2.");
+    prm.declare_entry("Initial velocity of body 1",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "Initial velocity of body 1, components in m/s.");
+    prm.declare_entry("Initial velocity of body 2",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "Initial velocity of body 2, components in m/s.");
+    prm.declare_entry("Gravity",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "Gravitational acceleration g, components in "
+                      "m/s^2; the body force is rho g.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.enter_subsection("Gmsh");
+    mesh_file      = prm.get("Mesh file");
+    body_tags[0]   = parse_tags(prm.get("Body 1 tags"), "Body 1 tags");
+    body_tags[1]   = parse_tags(prm.get("Body 2 tags"), "Body 2 tags");
+    dirichlet_tags = parse_tags(prm.get("Dirichlet tags"), "Dirichlet tags");
+    neumann_tags   = parse_tags(prm.get("Neumann tags"), "Neumann tags");
+    traction =
+      parse_vector<dim>(prm.get("Neumann traction"), "Neumann traction");
+    for (unsigned int b = 0; b < 2; ++b)
+      {
+        const std::string entry =
+          "Contact tags of body " + std::to_string(b + 1);
+        for (const auto tag : parse_tags(prm.get(entry), entry))
+          contact_tags[b].push_back(tag);
+        const std::string v =
+          "Initial velocity of body " + std::to_string(b + 1);
+        velocity[b] = parse_vector<dim>(prm.get(v), v);
+      }
+    gravity = parse_vector<dim>(prm.get("Gravity"), "Gravity");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    AssertThrow(!mesh_file.empty(),
+                ExcMessage("Scene/Gmsh/Mesh file must name a .msh file."));
+    if (std::filesystem::path(mesh_file).is_relative() &&
+        !this->input_directory.empty())
+      mesh_file =
+        (std::filesystem::path(this->input_directory) / mesh_file).string();
+    AssertThrow(!body_tags[0].empty(),
+                ExcMessage(
+                  "Scene/Gmsh/Body 1 tags must name at least one tag."));
+    for (const auto tag : body_tags[0])
+      AssertThrow(body_tags[1].count(tag) == 0,
+                  ExcMessage("Scene/Gmsh: tag " + std::to_string(tag) +
+                             " is in both Body 1 tags and Body 2 tags."));
+    AssertThrow(contact_tags[0].empty() == contact_tags[1].empty() &&
+                  (contact_tags[0].empty() || !body_tags[1].empty()),
+                ExcMessage("Scene/Gmsh: contact needs two bodies, and "
+                           "contact tags on both (Contact tags of body 1 and "
+                           "2)."));
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::create_coarse_mesh(Triangulation<dim, dim> &tria) const
+  {
+    std::ifstream in(mesh_file);
+    AssertThrow(in.good(),
+                ExcMessage("Scene/Gmsh/Mesh file '" + mesh_file +
+                           "' cannot be opened."));
+    GridIn<dim> grid_in;
+    grid_in.attach_triangulation(tria);
+    grid_in.read_msh(in);
+
+    // cells: physical tag -> body
+    std::set<unsigned int>               cell_tags;
+    std::map<unsigned int, unsigned int> vertex_body;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const unsigned int tag = cell->material_id();
+        cell_tags.insert(tag);
+        int body = -1;
+        for (unsigned int b = 0; b < 2; ++b)
+          if (body_tags[b].count(tag))
+            body = b;
+        AssertThrow(body >= 0,
+                    ExcMessage(
+                      "Mesh file '" + mesh_file +
+                      "': cells with physical tag " + std::to_string(tag) +
+                      " belong to no body (Scene/Gmsh/Body 1 tags = " +
+                      to_list(body_tags[0]) + ", Scene/Gmsh/Body 2 tags = " +
+                      to_list(body_tags[1]) + ")."));
+        cell->set_material_id(body);
+        for (const auto v : cell->vertex_indices())
+          {
+            const auto [it, inserted] =
+              vertex_body.emplace(cell->vertex_index(v), body);
+            AssertThrow(inserted || it->second == unsigned(body),
+                        ExcMessage("Mesh file '" + mesh_file +
+                                   "': the two bodies share the vertex " +
+                                   Utilities::to_string(cell->vertex(v)[0]) +
+                                   ", " +
+                                   Utilities::to_string(cell->vertex(v)[1]) +
+                                   "; bodies in contact must be meshed "
+                                   "separately."));
+          }
+      }
+    for (unsigned int b = 0; b < 2; ++b)
+      for (const auto tag : body_tags[b])
+        AssertThrow(cell_tags.count(tag),
+                    ExcMessage("Scene/Gmsh/Body " + std::to_string(b + 1) +
+                               " tags: the mesh file '" + mesh_file +
+                               "' has no cells with physical tag " +
+                               std::to_string(tag) + "."));
+
+    // boundaries: every tag named in the prm must exist
+    std::set<unsigned int> face_tags;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          face_tags.insert(cell->face(f)->boundary_id());
+    auto require = [&](const std::string &entry, const auto &tags) {
+      for (const auto tag : tags)
+        AssertThrow(face_tags.count(tag),
+                    ExcMessage("Scene/Gmsh/" + entry + ": the mesh file '" +
+                               mesh_file +
+                               "' has no boundary faces with physical tag " +
+                               std::to_string(tag) + "."));
+    };
+    require("Dirichlet tags", dirichlet_tags);
+    require("Neumann tags", neumann_tags);
+    require("Contact tags of body 1", contact_tags[0]);
+    require("Contact tags of body 2", contact_tags[1]);
+  }
+
+
+
+  template <int dim>
+  std::vector<ContactPair>
+  GmshScene<dim>::contact_pairs() const
+  {
+    if (contact_tags[0].empty())
+      return {};
+    ContactPair pair;
+    pair.first_side  = contact_tags[0];
+    pair.second_side = contact_tags[1];
+
+    return {pair};
+  }
+
+
+
+  template <int dim>
+  std::vector<DirichletBoundary>
+  GmshScene<dim>::dirichlet_boundaries() const
+  {
+    std::vector<DirichletBoundary> boundaries;
+    for (const auto tag : dirichlet_tags)
+      boundaries.push_back({types::boundary_id(tag)});
+    return boundaries;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+  GmshScene<dim>::neumann_tractions() const
+  {
+    std::vector<std::pair<types::boundary_id, Tensor<1, dim>>> tractions;
+    for (const auto tag : neumann_tags)
+      tractions.emplace_back(tag, traction);
+    return tractions;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  GmshScene<dim>::body_force(const unsigned int body) const
+  {
+    return this->material(body).density * gravity;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  GmshScene<dim>::initial_velocity(const Point<dim>  &x,
+                                   const unsigned int body) const
+  {
+    (void)x;
+    return velocity[body];
+  }
+
+
+  DYNCONTACT_REGISTER_SCENE(GmshScene,
+                            "gmsh",
+                            "any one- or two-body mesh from a .msh file")
+} // namespace dyncontact

@@ -1,0 +1,297 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+
+#include <dyncontact/scenes/hertz.h>
+
+#include <cmath>
+
+namespace dyncontact
+{
+  namespace
+  {
+    // boundary ids of the Hertz scenes
+    constexpr types::boundary_id curved_id = 1, top_id = 2, symmetry_x_id = 3,
+                                 block_top_id = 4, block_bottom_id = 5,
+                                 free_id = 6, symmetry_z_id = 7;
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  HertzScene<dim>::declare_parameters(ParameterHandler  &prm,
+                                      const std::string &subsection)
+  {
+    prm.enter_subsection("Scene");
+    prm.enter_subsection(subsection);
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(),
+                      "Radius R of the cylinder or "
+                      "ball, in m (> 0).");
+    prm.declare_entry("Block width",
+                      "4",
+                      Patterns::Double(),
+                      "Width of the meshed (half) "
+                      "block from the symmetry plane, in m (> Radius).");
+    prm.declare_entry("Block depth",
+                      "4",
+                      Patterns::Double(),
+                      "Depth of the block below its "
+                      "top y = 0, in m (> 0).");
+    prm.declare_entry("Load",
+                      "0.005",
+                      Patterns::Double(),
+                      "Total load pressing the "
+                      "cylinder (per unit thickness, N/m, in 2D) or the ball "
+                      "(N, in 3D) into the block, applied as a uniform "
+                      "traction on its flat top (>= 0).");
+    prm.declare_entry("Drop velocity",
+                      "0",
+                      Patterns::Double(),
+                      "Initial downward speed of the "
+                      "cylinder or ball, in m/s (>= 0).");
+    prm.declare_entry("Contact zone refinements",
+                      "3",
+                      Patterns::Integer(0, 10),
+                      "How often the cells within 2.5 "
+                      "times Hertz's contact size (plus the initial gap) of "
+                      "the first contact point are refined after the global "
+                      "refinements.");
+    prm.declare_entry("Initial gap",
+                      "0.1",
+                      Patterns::Double(),
+                      "Distance between the lowest point of the cylinder or "
+                      "ball and the block's top, in m (>= 0).");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  HertzScene<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    AssertThrow(dim == scene_dimension,
+                ExcMessage(scene_dimension == 2 ?
+                             "Scene 'hertz' is two-dimensional (set "
+                             "Dimension = 2); its 3D counterpart is 'ball "
+                             "on block'." :
+                             "Scene 'ball on block' is three-dimensional "
+                             "(set Dimension = 3); its 2D counterpart is "
+                             "'hertz'."));
+    prm.enter_subsection("Scene");
+    prm.enter_subsection(subsection);
+    radius              = prm.get_double("Radius");
+    block_width         = prm.get_double("Block width");
+    block_depth         = prm.get_double("Block depth");
+    load                = prm.get_double("Load");
+    drop_velocity       = prm.get_double("Drop velocity");
+    initial_gap         = prm.get_double("Initial gap");
+    contact_refinements = prm.get_integer("Contact zone refinements");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    const std::string where = "Scene/" + subsection + "/";
+
+    AssertThrow(std::isfinite(radius) && radius > 0.,
+                ExcMessage(where + "Radius must be a finite number > 0 (m)."));
+    AssertThrow(std::isfinite(block_width) && block_width > radius,
+                ExcMessage(where + "Block width must be a finite number > " +
+                           where + "Radius (m)."));
+    AssertThrow(std::isfinite(block_depth) && block_depth > 0.,
+                ExcMessage(where +
+                           "Block depth must be a finite number > 0 (m)."));
+    AssertThrow(std::isfinite(load) && load >= 0.,
+                ExcMessage(where + "Load must be a finite number >= 0."));
+    AssertThrow(std::isfinite(drop_velocity) && drop_velocity >= 0.,
+                ExcMessage(
+                  where + "Drop velocity must be a finite number >= 0 (m/s)."));
+    AssertThrow(std::isfinite(initial_gap) && initial_gap >= 0.,
+                ExcMessage(where +
+                           "Initial gap must be a finite number >= 0 (m)."));
+  }
+
+
+
+  template <int dim>
+  double
+  HertzScene<dim>::effective_modulus() const
+  {
+    double inverse = 0.;
+    for (unsigned int b = 0; b < 2; ++b)
+      {
+        const Material &m = this->material(b);
+        inverse +=
+          (1. - m.poissons_ratio * m.poissons_ratio) / m.youngs_modulus;
+      }
+    return 1. / inverse;
+  }
+
+
+
+  template <int dim>
+  double
+  HertzScene<dim>::hertz_contact_size() const
+  {
+    const double E = effective_modulus();
+    if (dim == 2)
+      return std::sqrt(4. * load * radius / (M_PI * E));
+    return std::cbrt(3. * load * radius / (4. * E));
+  }
+
+
+
+  template <int dim>
+  void
+  HertzScene<dim>::create_coarse_mesh(Triangulation<dim, dim> &tria) const
+  {
+    // the cylinder/ball: a quarter disc (1/8 ball) in x, y >= 0 turned by
+    // -90 degrees about z into x >= 0, y <= 0, then lifted so that its
+    // lowest point is at (0, g0)
+    const double            centre_height = radius + initial_gap;
+    Triangulation<dim, dim> body;
+    GridGenerator::quarter_hyper_ball(body, Point<dim>(), radius);
+    GridTools::transform(
+      [&](const Point<dim> &p) {
+        Point<dim> q = p;
+        q[0]         = p[1];
+        q[1]         = centre_height - p[0];
+        return q;
+      },
+      body);
+
+    // the block [0, W] x [-D, 0] (x [0, W]), cells of about R/2
+    Triangulation<dim, dim>   block;
+    std::vector<unsigned int> repetitions(dim);
+    Point<dim>                lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double extent = (d == 1) ? block_depth : block_width;
+        repetitions[d] =
+          std::max<unsigned int>(1, std::lround(2. * extent / radius));
+        lower[d] = (d == 1) ? -block_depth : 0.;
+        upper[d] = (d == 1) ? 0. : block_width;
+      }
+    GridGenerator::subdivided_hyper_rectangle(block, repetitions, lower, upper);
+
+    merge_bodies<dim>({&body, &block}, tria);
+
+    const double tolerance = 1e-8 * radius;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const Point<dim>   c = cell->face(f)->center();
+            types::boundary_id id;
+            if (std::abs(c[0]) < tolerance)
+              id = symmetry_x_id;
+            else if (dim == 3 && std::abs(c[dim - 1]) < tolerance)
+              id = symmetry_z_id;
+            else if (cell->material_id() == 0)
+              id = (std::abs(c[1] - centre_height) < tolerance) ? top_id :
+                                                                  curved_id;
+            else if (std::abs(c[1]) < tolerance)
+              id = block_top_id;
+            else if (std::abs(c[1] + block_depth) < tolerance)
+              id = block_bottom_id;
+            else
+              id = free_id;
+            cell->face(f)->set_boundary_id(id);
+            if (id == curved_id)
+              cell->face(f)->set_manifold_id(0);
+          }
+    Point<dim> centre;
+    centre[1] = centre_height;
+    tria.set_manifold(0, SphericalManifold<dim>(centre));
+  }
+
+
+
+  template <int dim>
+  void
+  HertzScene<dim>::refine_initial_mesh(Triangulation<dim, dim> &tria) const
+  {
+    // refine towards the first contact point (the origin) within 2.5 times
+    // Hertz's contact size
+    const double zone = 2.5 * hertz_contact_size() + initial_gap;
+    for (unsigned int k = 0; k < contact_refinements; ++k)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              cell->center().norm() < zone + 0.5 * cell->diameter())
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<ContactPair>
+  HertzScene<dim>::contact_pairs() const
+  {
+    ContactPair pair;
+    pair.first_side    = {curved_id};
+    pair.second_side   = {block_top_id};
+    pair.search_radius = initial_gap + 0.5 * radius;
+
+    return {pair};
+  }
+
+
+
+  template <int dim>
+  std::vector<DirichletBoundary>
+  HertzScene<dim>::dirichlet_boundaries() const
+  {
+    std::vector<DirichletBoundary> boundaries;
+    boundaries.push_back({symmetry_x_id, {{true, false, false}}});
+    if (dim == 3)
+      boundaries.push_back({symmetry_z_id, {{false, false, true}}});
+    boundaries.push_back({block_bottom_id, {{true, true, true}}});
+    return boundaries;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+  HertzScene<dim>::neumann_tractions() const
+  {
+    // the full load over the full top (2D: width 2R; 3D: area pi R^2)
+    const double   area = (dim == 2) ? 2. * radius : M_PI * radius * radius;
+    Tensor<1, dim> traction;
+    traction[1] = -load / area;
+    return {{top_id, traction}};
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  HertzScene<dim>::initial_velocity(const Point<dim>  &x,
+                                    const unsigned int body) const
+  {
+    Tensor<1, dim> v;
+    (void)x;
+    if (body == 0)
+      v[1] = -drop_velocity;
+    return v;
+  }
+
+  template class HertzScene<2>;
+  template class HertzScene<3>;
+
+  DYNCONTACT_REGISTER_SCENE(Hertz,
+                            "hertz",
+                            "2D: a half-cylinder pressed into or dropping "
+                            "onto a block")
+  DYNCONTACT_REGISTER_SCENE(BallOnBlock,
+                            "ball on block",
+                            "3D: a ball pressed into or dropping onto a "
+                            "block")
+} // namespace dyncontact

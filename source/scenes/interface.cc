@@ -1,0 +1,161 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include <dyncontact/scenes/interface.h>
+
+#include <algorithm>
+
+namespace dyncontact
+{
+  template class PluginRegistry<Scene>;
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  Scene<dim>::material_subsections() const
+  {
+    if (n_bodies() == 1)
+      return {"Material"};
+    return {"Material", "Material of body 2"};
+  }
+
+
+
+  template <int dim>
+  std::vector<types::boundary_id>
+  Scene<dim>::all_contact_boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids = contact_boundary_ids();
+    for (const auto &pair : contact_pairs())
+      {
+        ids.insert(ids.end(), pair.first_side.begin(), pair.first_side.end());
+        ids.insert(ids.end(), pair.second_side.begin(), pair.second_side.end());
+      }
+    return ids;
+  }
+
+
+
+  template <int dim>
+  bool
+  Scene<dim>::has_contact() const
+  {
+    return obstacle().has_value() || !contact_pairs().empty();
+  }
+
+
+
+  template <int dim>
+  bool
+  Scene<dim>::is_viscous() const
+  {
+    bool viscous = false;
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      viscous = viscous || material(b).is_viscous();
+    return viscous;
+  }
+
+
+
+  void
+  declare_scene_parameters(ParameterHandler &prm)
+  {
+    std::string list;
+    for (const auto &info : PluginRegistry<Scene>::plugins())
+      list += "'" + info.name + "' (" + info.description + "); ";
+    prm.enter_subsection("Scene");
+    prm.declare_entry("Name",
+                      "bar impact",
+                      Patterns::Anything(),
+                      "Which scene to run. Each scene reads its own "
+                      "subsection Scene/<Name> (e.g. Scene/Bar impact). "
+                      "Available: " +
+                        list.substr(0, list.size() - 2) + ".");
+    prm.leave_subsection();
+    PluginRegistry<Scene>::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<Scene<dim>>
+  create_scene(ParameterHandler &prm, const std::string &input_directory)
+  {
+    prm.enter_subsection("Scene");
+    const std::string name = prm.get("Name");
+    prm.leave_subsection();
+
+    const auto *info = PluginRegistry<Scene>::find(name);
+    AssertThrow(info != nullptr,
+                ExcMessage("Scene/Name must be one of: '" +
+                           PluginRegistry<Scene>::names("', '") + "'; got '" +
+                           name + "'."));
+    std::unique_ptr<Scene<dim>> scene = info->template create<dim>();
+    scene->scene_name                 = name;
+    scene->input_directory            = input_directory;
+    scene->parse_parameters(prm);
+    for (const std::string &subsection : scene->material_subsections())
+      {
+        Material material;
+        material.parse_parameters(prm, subsection);
+        scene->materials.push_back(material);
+      }
+    return scene;
+  }
+
+
+
+  template <int dim>
+  void
+  merge_bodies(const std::vector<const Triangulation<dim, dim> *> &bodies,
+               Triangulation<dim, dim>                            &result)
+  {
+    std::vector<Point<dim>>    vertices;
+    std::vector<CellData<dim>> cells;
+    SubCellData                subcell_data;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        const auto [body_vertices, body_cells, body_subcells] =
+          GridTools::get_coarse_mesh_description(*bodies[b]);
+        const unsigned int offset = vertices.size();
+        vertices.insert(vertices.end(),
+                        body_vertices.begin(),
+                        body_vertices.end());
+        for (CellData<dim> cell : body_cells)
+          {
+            for (auto &v : cell.vertices)
+              v += offset;
+            cell.material_id = b;
+            cells.push_back(cell);
+          }
+        for (CellData<1> line : body_subcells.boundary_lines)
+          {
+            for (auto &v : line.vertices)
+              v += offset;
+            subcell_data.boundary_lines.push_back(line);
+          }
+        for (CellData<2> quad : body_subcells.boundary_quads)
+          {
+            for (auto &v : quad.vertices)
+              v += offset;
+            subcell_data.boundary_quads.push_back(quad);
+          }
+      }
+    result.create_triangulation(vertices, cells, subcell_data);
+  }
+
+  template class Scene<2>;
+  template class Scene<3>;
+  template std::unique_ptr<Scene<2>>
+  create_scene<2>(ParameterHandler &, const std::string &);
+  template std::unique_ptr<Scene<3>>
+  create_scene<3>(ParameterHandler &, const std::string &);
+  template void
+  merge_bodies<2>(const std::vector<const Triangulation<2, 2> *> &,
+                  Triangulation<2, 2> &);
+  template void
+  merge_bodies<3>(const std::vector<const Triangulation<3, 3> *> &,
+                  Triangulation<3, 3> &);
+} // namespace dyncontact

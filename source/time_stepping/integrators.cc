@@ -1,0 +1,467 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/time_stepping/integrators.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+  StepOperators::StepOperators(
+    const bool                            is_static,
+    const double                          tau,
+    const SystemMatrices                 &system,
+    const ActiveSetSolver::Parameters    &solver_parameters,
+    const IndexSet                       &locally_owned,
+    const IndexSet                       &locally_relevant,
+    const AffineConstraints<double>      &mesh_constraints,
+    const ContactRows                    &rows,
+    const std::vector<std::vector<bool>> &constant_modes,
+    const MPI_Comm                        comm)
+    : displacement_active(rows.size(), 0)
+    , projection_active(rows.size(), 0)
+    , time_step(tau)
+    , system(system)
+    , displacement_solver(solver_parameters, comm)
+    , projection_solver(solver_parameters, comm)
+    , rows(&rows)
+  {
+    displacement_solver.reinit(locally_owned,
+                               locally_relevant,
+                               mesh_constraints,
+                               rows);
+    displacement_solver.set_constant_modes(constant_modes);
+    if (is_static)
+      {
+        // H = A; AMG gets A + eps M, which stays SPD without Dirichlet data
+        S.copy_from(*system.A);
+        preconditioner_matrix.copy_from(*system.A);
+        preconditioner_matrix.add(1e-6 * system.A->linfty_norm() /
+                                    system.M->linfty_norm(),
+                                  *system.M);
+        displacement_solver.set_matrix(S, false, &preconditioner_matrix);
+        // start with every row active: the bodies are held by the contact
+        displacement_active.assign(rows.size(), 1);
+      }
+    else
+      {
+        // S = M + tau^2/4 A + tau/2 B, formed from the assembled matrices
+        S.copy_from(*system.M);
+        S.add(tau * tau / 4., *system.A);
+        if (system.B != nullptr)
+          S.add(tau / 2., *system.B);
+        displacement_solver.set_matrix(S, false);
+      }
+    projection_solver.reinit(locally_owned,
+                             locally_relevant,
+                             mesh_constraints,
+                             rows);
+    projection_solver.set_matrix(*system.M, system.lumped_mass);
+  }
+
+
+
+  void
+  StepOperators::rhs(const VectorType &w,
+                     const VectorType &u,
+                     VectorType       &r) const
+  {
+    // r(w) = M w - tau^2/4 A u + tau/2 B u + tau^2/2 f
+    const double tau = time_step;
+    VectorType   tmp(u);
+    system.M->vmult(r, w);
+    system.A->vmult(tmp, u);
+    r.add(-tau * tau / 4., tmp);
+    if (system.B != nullptr)
+      {
+        system.B->vmult(tmp, u);
+        r.add(tau / 2., tmp);
+      }
+    r.add(tau * tau / 2., *system.f);
+  }
+
+
+
+  void
+  StepOperators::solve_displacement(const VectorType &r,
+                                    VectorType       &v,
+                                    StepReport       &report)
+  {
+    report.displacement_solve =
+      displacement_solver.solve(r, v, displacement_active, report.multipliers);
+    report.active = displacement_active;
+  }
+
+
+
+  void
+  StepOperators::project(const VectorType &w, VectorType &v, StepReport &report)
+  {
+    VectorType          r(w);
+    std::vector<double> multipliers;
+    system.M->vmult(r, w);
+    v = w;
+    report.projection_solve =
+      projection_solver.solve(r, v, projection_active, multipliers);
+    report.projection_active = projection_active;
+  }
+
+
+
+  double
+  StepOperators::mass_norm(const VectorType &x) const
+  {
+    VectorType Mx(x);
+    system.M->vmult(Mx, x);
+    return std::sqrt(Mx * x);
+  }
+
+
+
+  // ---------------------------------------------------------------------
+  // The schemes. Each reads like its equations in the paper.
+  // ---------------------------------------------------------------------
+
+  void
+  step_nci(StepOperators &ops,
+           VectorType    &u,
+           VectorType    &udot,
+           StepReport    &report)
+  {
+    const double tau = ops.tau();
+    // (11c): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
+    VectorType w(u), r(u);
+    w.add(tau, udot);
+    ops.rhs(w, u, r);
+    VectorType u_new(w);
+    ops.solve_displacement(r, u_new, report);
+    // (11d): udot^{n+1} = 2/tau (u^{n+1} - u^n) - udot^n
+    udot.sadd(-1., 2. / tau, u_new);
+    udot.add(-2. / tau, u);
+    u = u_new;
+  }
+
+
+
+  void
+  step_ncs(StepOperators &ops,
+           VectorType    &u,
+           VectorType    &udot,
+           StepReport    &report)
+  {
+    const double tau = ops.tau();
+    // u_pred = P(u^n + tau udot^n)
+    VectorType w(u), u_pred(u), r(u);
+    w.add(tau, udot);
+    ops.project(w, u_pred, report);
+    VectorType correction(u_pred);
+    correction -= w;
+    report.velocity_correction = ops.mass_norm(correction) / tau;
+    // u^{n+1} = argmin_K 1/2 v^T S v - r(u_pred)^T v
+    ops.rhs(u_pred, u, r);
+    VectorType u_new(u_pred);
+    ops.solve_displacement(r, u_new, report);
+    // udot^{n+1} = udot^n + 2/tau (u^{n+1} - u_pred)
+    udot.add(2. / tau, u_new);
+    udot.add(-2. / tau, u_pred);
+    u = u_new;
+  }
+
+
+
+  void
+  initialize_ncspp(StepOperators &ops,
+                   VectorType    &u,
+                   VectorType    &udot,
+                   StepReport    &report)
+  {
+    const double tau = ops.tau();
+    // (12c): udot^0 = (P(u^0 + tau udot_0) - u^0) / tau
+    VectorType w(u), projected(u);
+    w.add(tau, udot);
+    ops.project(w, projected, report);
+    udot = projected;
+    udot -= u;
+    udot /= tau;
+  }
+
+
+
+  void
+  step_ncspp(StepOperators &ops,
+             VectorType    &u,
+             VectorType    &udot,
+             StepReport    &report)
+  {
+    const double tau = ops.tau();
+    // (12d): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
+    VectorType w(u), r(u);
+    w.add(tau, udot);
+    ops.rhs(w, u, r);
+    VectorType u_new(w);
+    ops.solve_displacement(r, u_new, report);
+    // (12e): udot_pred = 2/tau (u^{n+1} - u^n) - udot^n
+    VectorType udot_pred(udot);
+    udot_pred.sadd(-1., 2. / tau, u_new);
+    udot_pred.add(-2. / tau, u);
+    // (12f): udot^{n+1} = (P(u^{n+1} + tau udot_pred) - u^{n+1}) / tau
+    VectorType predicted(u_new), projected(u_new);
+    predicted.add(tau, udot_pred);
+    ops.project(predicted, projected, report);
+    udot = projected;
+    udot -= u_new;
+    udot /= tau;
+    VectorType correction(udot);
+    correction -= udot_pred;
+    report.velocity_correction = ops.mass_norm(correction);
+    u                          = u_new;
+  }
+
+
+
+  void
+  step_static(StepOperators &ops,
+              VectorType    &u,
+              VectorType    &udot,
+              StepReport    &report)
+  {
+    // min 1/2 v^T A v - f^T v on K_h
+    ops.solve_displacement(ops.load(), u, report);
+    udot = 0.;
+  }
+
+
+
+  const std::vector<Scheme> &
+  schemes()
+  {
+    static const std::vector<Scheme> list = {
+      {"N-CI",
+       "the contact-implicit Newmark method, Kane et al., eq. (11)",
+       false,
+       nullptr,
+       &step_nci},
+      {"N-CS",
+       "the contact-stabilized Newmark method, Deuflhard, Krause and Ertel",
+       false,
+       nullptr,
+       &step_ncs},
+      {"N-CS++",
+       "the improved contact-stabilized Newmark method, eq. (12)",
+       false,
+       &initialize_ncspp,
+       &step_ncspp},
+      {"static",
+       "the quasi-static limit: min 1/2 v^T A v - f^T v on K_h, solved once",
+       true,
+       nullptr,
+       &step_static}};
+    return list;
+  }
+
+
+
+  const Scheme &
+  scheme_by_name(const std::string &name)
+  {
+    std::string names;
+    for (const Scheme &scheme : schemes())
+      {
+        if (scheme.name == name)
+          return scheme;
+        names += (names.empty() ? "" : ", ") + scheme.name;
+      }
+    AssertThrow(false,
+                ExcMessage("Time integration/Scheme must be one of " + names +
+                           "; got '" + name + "'."));
+    return schemes().front();
+  }
+
+
+
+  void
+  TimeIntegrator::declare_parameters(ParameterHandler &prm)
+  {
+    std::string names, documentation;
+    for (const Scheme &scheme : schemes())
+      {
+        names += (names.empty() ? "" : "|") + scheme.name;
+        documentation += (documentation.empty() ? "" : ", ") + scheme.name +
+                         " (" + scheme.description + ")";
+      }
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("Scheme",
+                      "N-CS++",
+                      Patterns::Selection(names),
+                      "Time integrator: " + documentation + ".");
+    prm.leave_subsection();
+  }
+
+
+
+  const Scheme &
+  TimeIntegrator::parse_scheme(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    const std::string name = prm.get("Scheme");
+    prm.leave_subsection();
+    return scheme_by_name(name);
+  }
+
+
+
+  TimeIntegrator::TimeIntegrator(
+    const Scheme                         &scheme,
+    const double                          tau,
+    const SystemMatrices                 &system,
+    const ActiveSetSolver::Parameters    &solver_parameters,
+    const IndexSet                       &locally_owned,
+    const IndexSet                       &locally_relevant,
+    const AffineConstraints<double>      &mesh_constraints,
+    const ContactRows                    &rows,
+    const std::vector<std::vector<bool>> &constant_modes,
+    const MPI_Comm                        comm)
+    : scheme(scheme)
+    , operators(scheme.is_static,
+                tau,
+                system,
+                solver_parameters,
+                locally_owned,
+                locally_relevant,
+                mesh_constraints,
+                rows,
+                constant_modes,
+                comm)
+  {}
+
+
+
+  StepReport
+  TimeIntegrator::empty_report() const
+  {
+    StepReport        report;
+    const std::size_t n = operators.n_rows();
+    report.active.assign(n, 0);
+    report.multipliers.assign(n, 0.);
+    report.projection_active.assign(n, 0);
+    report.critical.assign(n, 0);
+    return report;
+  }
+
+
+
+  StepReport
+  TimeIntegrator::initialize(VectorType &u, VectorType &udot)
+  {
+    StepReport report = empty_report();
+    if (scheme.initialize != nullptr)
+      scheme.initialize(operators, u, udot, report);
+    return report;
+  }
+
+
+
+  StepReport
+  TimeIntegrator::step(VectorType &u, VectorType &udot)
+  {
+    StepReport report = empty_report();
+    scheme.step(operators, u, udot, report);
+
+    // Gamma*_{h,C} (eq. 40): rows where the projection was active but the
+    // displacement step was not
+    for (unsigned int p = 0; p < operators.n_rows(); ++p)
+      report.critical[p] = report.projection_active[p] && !report.active[p];
+    return report;
+  }
+
+
+
+  void
+  TimeIntegrator::project_onto_constraints(VectorType &u)
+  {
+    StepReport report;
+    VectorType projected(u);
+    operators.project(u, projected, report);
+    u = projected;
+  }
+
+
+
+  double
+  TimeIntegrator::restore_constraints(VectorType               &u,
+                                      const ContactRowOperator &row_operator)
+  {
+    const auto violation     = row_operator.constraint_values(u);
+    double     max_violation = 0.;
+    for (const double v : violation)
+      max_violation = std::max(max_violation, v);
+    double scale = 1.;
+    for (const auto &row : row_operator.rows().rows)
+      scale = std::max(scale, std::abs(row.gap));
+    if (max_violation > 1e-12 * scale)
+      project_onto_constraints(u);
+
+    // the active set restarts from the transferred state: rows that touch
+    std::vector<char> active(row_operator.size(), 0);
+    const auto        after = row_operator.constraint_values(u);
+    for (unsigned int p = 0; p < active.size(); ++p)
+      active[p] = (after[p] > -1e-10 * scale);
+    warm_start(active);
+    return max_violation;
+  }
+
+
+
+  void
+  TimeIntegrator::warm_start(const std::vector<char> &active,
+                             const std::vector<char> &projection)
+  {
+    if (active.size() == operators.n_rows())
+      operators.displacement_active = active;
+    const std::vector<char> &p = projection.empty() ? active : projection;
+    if (p.size() == operators.n_rows())
+      operators.projection_active = p;
+  }
+
+
+
+  namespace
+  {
+    std::string
+    flags(const std::vector<char> &active)
+    {
+      std::string text(active.size(), '0');
+      for (unsigned int p = 0; p < active.size(); ++p)
+        text[p] = active[p] ? '1' : '0';
+      return text;
+    }
+
+    std::vector<char>
+    unflag(const std::string &text)
+    {
+      std::vector<char> active;
+      for (const char c : text)
+        active.push_back(c == '1');
+      return active;
+    }
+  } // namespace
+
+
+
+  void
+  TimeIntegrator::save(std::map<std::string, std::string> &state) const
+  {
+    state["displacement_active"] = flags(operators.displacement_active);
+    state["projection_active"]   = flags(operators.projection_active);
+  }
+
+
+
+  void
+  TimeIntegrator::load(const std::map<std::string, std::string> &state)
+  {
+    warm_start(unflag(state.at("displacement_active")),
+               unflag(state.at("projection_active")));
+  }
+} // namespace dyncontact
