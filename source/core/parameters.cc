@@ -1,9 +1,17 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/core/parameters.h>
-#include <dyncontact/core/simulator.h>
+#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/output/checkpoint.h>
+#include <dyncontact/output/reference_states.h>
+#include <dyncontact/output/vtu_writer.h>
+#include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/integrators.h>
 
 #include <set>
 #include <sstream>
@@ -51,7 +59,23 @@ namespace dyncontact
   void
   declare_all_parameters(ParameterHandler &prm)
   {
-    Simulator<2>::declare_parameters(prm);
+    // each component declares its own; the declarations do not depend on
+    // the dimension
+    constexpr int dim = 2;
+    GlobalParameters::declare_parameters(prm);
+    SemiDiscreteSystem<dim>::Parameters::declare_parameters(prm);
+    SimulationControl::declare_parameters(prm);
+    TimeIntegrator::declare_parameters(prm);
+    Material::declare_parameters(prm, "Material");
+    Material::declare_parameters(prm, "Material of body 2");
+    ActiveSetSolver::Parameters::declare_parameters(prm);
+    ContactSetup<dim>::Parameters::declare_parameters(prm);
+    MeshAdaptor<dim>::declare_parameters(prm);
+    VtuWriter<dim>::declare_parameters(prm);
+    Checkpoints::declare_parameters(prm);
+    ReferenceStates<dim>::declare_parameters(prm);
+    Postprocess::Manager<dim>::declare_parameters(prm);
+    declare_scene_parameters(prm);
   }
 
 

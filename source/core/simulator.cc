@@ -18,28 +18,6 @@
 namespace dyncontact
 {
   template <int dim>
-  void
-  Simulator<dim>::declare_parameters(ParameterHandler &prm)
-  {
-    GlobalParameters::declare_parameters(prm);
-    SemiDiscreteSystem<dim>::Parameters::declare_parameters(prm);
-    SimulationControl::declare_parameters(prm);
-    TimeIntegrator::declare_parameters(prm);
-    Material::declare_parameters(prm, "Material");
-    Material::declare_parameters(prm, "Material of body 2");
-    ActiveSetSolver::Parameters::declare_parameters(prm);
-    ContactSetup<dim>::Parameters::declare_parameters(prm);
-    MeshAdaptor<dim>::declare_parameters(prm);
-    VtuWriter<dim>::declare_parameters(prm);
-    Checkpoints::declare_parameters(prm);
-    ReferenceStates<dim>::declare_parameters(prm);
-    Postprocess::Manager<dim>::declare_parameters(prm);
-    declare_scene_parameters(prm);
-  }
-
-
-
-  template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &input_directory,
                             const MPI_Comm     comm)

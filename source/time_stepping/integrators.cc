@@ -120,116 +120,120 @@ namespace dyncontact
 
 
   // ---------------------------------------------------------------------
-  // The schemes. Each reads like its equations in the paper.
+  // The schemes. Each reads like its equations in the paper; schemes()
+  // lists them.
   // ---------------------------------------------------------------------
 
-  void
-  step_nci(StepOperators &ops,
-           VectorType    &u,
-           VectorType    &udot,
-           StepReport    &report)
+  namespace
   {
-    const double tau = ops.tau();
-    // (11c): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
-    VectorType w(u), r(u);
-    w.add(tau, udot);
-    ops.rhs(w, u, r);
-    VectorType u_new(w);
-    ops.solve_displacement(r, u_new, report);
-    // (11d): udot^{n+1} = 2/tau (u^{n+1} - u^n) - udot^n
-    udot.sadd(-1., 2. / tau, u_new);
-    udot.add(-2. / tau, u);
-    u = u_new;
-  }
-
-
-
-  void
-  step_ncs(StepOperators &ops,
-           VectorType    &u,
-           VectorType    &udot,
-           StepReport    &report)
-  {
-    const double tau = ops.tau();
-    // u_pred = P(u^n + tau udot^n)
-    VectorType w(u), u_pred(u), r(u);
-    w.add(tau, udot);
-    ops.project(w, u_pred, report);
-    VectorType correction(u_pred);
-    correction -= w;
-    report.velocity_correction = ops.mass_norm(correction) / tau;
-    // u^{n+1} = argmin_K 1/2 v^T S v - r(u_pred)^T v
-    ops.rhs(u_pred, u, r);
-    VectorType u_new(u_pred);
-    ops.solve_displacement(r, u_new, report);
-    // udot^{n+1} = udot^n + 2/tau (u^{n+1} - u_pred)
-    udot.add(2. / tau, u_new);
-    udot.add(-2. / tau, u_pred);
-    u = u_new;
-  }
-
-
-
-  void
-  initialize_ncspp(StepOperators &ops,
-                   VectorType    &u,
-                   VectorType    &udot,
-                   StepReport    &report)
-  {
-    const double tau = ops.tau();
-    // (12c): udot^0 = (P(u^0 + tau udot_0) - u^0) / tau
-    VectorType w(u), projected(u);
-    w.add(tau, udot);
-    ops.project(w, projected, report);
-    udot = projected;
-    udot -= u;
-    udot /= tau;
-  }
-
-
-
-  void
-  step_ncspp(StepOperators &ops,
+    void
+    step_nci(StepOperators &ops,
              VectorType    &u,
              VectorType    &udot,
              StepReport    &report)
-  {
-    const double tau = ops.tau();
-    // (12d): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
-    VectorType w(u), r(u);
-    w.add(tau, udot);
-    ops.rhs(w, u, r);
-    VectorType u_new(w);
-    ops.solve_displacement(r, u_new, report);
-    // (12e): udot_pred = 2/tau (u^{n+1} - u^n) - udot^n
-    VectorType udot_pred(udot);
-    udot_pred.sadd(-1., 2. / tau, u_new);
-    udot_pred.add(-2. / tau, u);
-    // (12f): udot^{n+1} = (P(u^{n+1} + tau udot_pred) - u^{n+1}) / tau
-    VectorType predicted(u_new), projected(u_new);
-    predicted.add(tau, udot_pred);
-    ops.project(predicted, projected, report);
-    udot = projected;
-    udot -= u_new;
-    udot /= tau;
-    VectorType correction(udot);
-    correction -= udot_pred;
-    report.velocity_correction = ops.mass_norm(correction);
-    u                          = u_new;
-  }
+    {
+      const double tau = ops.tau();
+      // (11c): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
+      VectorType w(u), r(u);
+      w.add(tau, udot);
+      ops.rhs(w, u, r);
+      VectorType u_new(w);
+      ops.solve_displacement(r, u_new, report);
+      // (11d): udot^{n+1} = 2/tau (u^{n+1} - u^n) - udot^n
+      udot.sadd(-1., 2. / tau, u_new);
+      udot.add(-2. / tau, u);
+      u = u_new;
+    }
 
 
 
-  void
-  step_static(StepOperators &ops,
-              VectorType    &u,
-              VectorType    &udot,
-              StepReport    &report)
-  {
-    // min 1/2 v^T A v - f^T v on K_h
-    ops.solve_displacement(ops.load(), u, report);
-    udot = 0.;
-  }
+    void
+    step_ncs(StepOperators &ops,
+             VectorType    &u,
+             VectorType    &udot,
+             StepReport    &report)
+    {
+      const double tau = ops.tau();
+      // u_pred = P(u^n + tau udot^n)
+      VectorType w(u), u_pred(u), r(u);
+      w.add(tau, udot);
+      ops.project(w, u_pred, report);
+      VectorType correction(u_pred);
+      correction -= w;
+      report.velocity_correction = ops.mass_norm(correction) / tau;
+      // u^{n+1} = argmin_K 1/2 v^T S v - r(u_pred)^T v
+      ops.rhs(u_pred, u, r);
+      VectorType u_new(u_pred);
+      ops.solve_displacement(r, u_new, report);
+      // udot^{n+1} = udot^n + 2/tau (u^{n+1} - u_pred)
+      udot.add(2. / tau, u_new);
+      udot.add(-2. / tau, u_pred);
+      u = u_new;
+    }
+
+
+
+    void
+    initialize_ncspp(StepOperators &ops,
+                     VectorType    &u,
+                     VectorType    &udot,
+                     StepReport    &report)
+    {
+      const double tau = ops.tau();
+      // (12c): udot^0 = (P(u^0 + tau udot_0) - u^0) / tau
+      VectorType w(u), projected(u);
+      w.add(tau, udot);
+      ops.project(w, projected, report);
+      udot = projected;
+      udot -= u;
+      udot /= tau;
+    }
+
+
+
+    void
+    step_ncspp(StepOperators &ops,
+               VectorType    &u,
+               VectorType    &udot,
+               StepReport    &report)
+    {
+      const double tau = ops.tau();
+      // (12d): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
+      VectorType w(u), r(u);
+      w.add(tau, udot);
+      ops.rhs(w, u, r);
+      VectorType u_new(w);
+      ops.solve_displacement(r, u_new, report);
+      // (12e): udot_pred = 2/tau (u^{n+1} - u^n) - udot^n
+      VectorType udot_pred(udot);
+      udot_pred.sadd(-1., 2. / tau, u_new);
+      udot_pred.add(-2. / tau, u);
+      // (12f): udot^{n+1} = (P(u^{n+1} + tau udot_pred) - u^{n+1}) / tau
+      VectorType predicted(u_new), projected(u_new);
+      predicted.add(tau, udot_pred);
+      ops.project(predicted, projected, report);
+      udot = projected;
+      udot -= u_new;
+      udot /= tau;
+      VectorType correction(udot);
+      correction -= udot_pred;
+      report.velocity_correction = ops.mass_norm(correction);
+      u                          = u_new;
+    }
+
+
+
+    void
+    step_static(StepOperators &ops,
+                VectorType    &u,
+                VectorType    &udot,
+                StepReport    &report)
+    {
+      // min 1/2 v^T A v - f^T v on K_h
+      ops.solve_displacement(ops.load(), u, report);
+      udot = 0.;
+    }
+  } // namespace
 
 
 

@@ -42,16 +42,13 @@ namespace dyncontact
    * - MeshAdaptor: when and where the mesh adapts (criteria are plugins);
    * - VtuWriter, ReferenceStates, Checkpoints: output.
    *
-   * Components read the state through SimulatorAccess.
+   * Components read the state through SimulatorAccess; each declares its own
+   * parameters (declare_all_parameters() collects them).
    */
   template <int dim>
   class Simulator
   {
   public:
-    /// Declares the parameters of every component and plugin.
-    static void
-    declare_parameters(ParameterHandler &prm);
-
     /// Reads every component's parameters from @p prm (already parsed);
     /// relative file names refer to @p input_directory.
     Simulator(ParameterHandler  &prm,

@@ -131,8 +131,11 @@ namespace dyncontact
 
   /**
    * A time integrator: its name in the prm, a description, whether it is the
-   * static problem, its step and (optionally) its initial velocity. A new
-   * scheme is one named function and one line in schemes().
+   * static problem, its step and (optionally) its initial velocity. The
+   * schemes are named functions in source/time_stepping/integrators.cc
+   * (step_nci, step_ncs, step_ncspp with initialize_ncspp, step_static), each
+   * reading like its equations; a new scheme is one such function and one
+   * line in schemes().
    */
   struct Scheme
   {
@@ -150,28 +153,6 @@ namespace dyncontact
   /// The scheme of this name; throws with the list of names otherwise.
   const Scheme &
   scheme_by_name(const std::string &name);
-
-  /// N-CI (Kane et al., eq. 11).
-  void
-  step_nci(StepOperators &ops, VectorType &u, VectorType &udot, StepReport &);
-  /// N-CS (Deuflhard, Krause, Ertel 2007).
-  void
-  step_ncs(StepOperators &ops, VectorType &u, VectorType &udot, StepReport &);
-  /// N-CS++ (eq. 12d-f).
-  void
-  step_ncspp(StepOperators &ops, VectorType &u, VectorType &udot, StepReport &);
-  /// N-CS++'s initial velocity (eq. 12c).
-  void
-  initialize_ncspp(StepOperators &ops,
-                   VectorType    &u,
-                   VectorType    &udot,
-                   StepReport    &report);
-  /// The static problem min 1/2 v^T A v - f^T v on K_h.
-  void
-  step_static(StepOperators &ops,
-              VectorType    &u,
-              VectorType    &udot,
-              StepReport    &report);
 
   /**
    * A scheme with its operators at one time step tau: the object the time
