@@ -148,7 +148,7 @@ namespace dyncontact
     , tree(std::make_unique<Tree>())
   {
     // the rim of the master surface: vertices (2D) or edges (3D) that belong
-    // to a single master face
+    // to a single master face and do not lie on a plane of symmetry
     double scale = 0.;
     for (const auto &face : faces)
       scale = std::max(scale, face.vertices[0].distance(face.vertices.back()));
@@ -183,7 +183,8 @@ namespace dyncontact
       {
         rim[f] = {{false, false, false, false}};
         for (unsigned int s = 0; s < sides.size(); ++s)
-          rim[f][s] = (count[side_key(faces[f], s)] == 1);
+          rim[f][s] = (count[side_key(faces[f], s)] == 1) &&
+                      !faces[f].on_symmetry_plane[s];
       }
 
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;

@@ -216,8 +216,10 @@ namespace dyncontact
     for (const ContactPair &pair : contact_pairs(scene))
       {
         const std::array<std::vector<MasterFace<dim>>, 2> sides = {
-          {gather_faces(system, pair.first_side),
-           gather_faces(system, pair.second_side)}};
+          {gather_faces(system, pair.first_side, scene.symmetry_boundary_ids()),
+           gather_faces(system,
+                        pair.second_side,
+                        scene.symmetry_boundary_ids())}};
         int slave = pair.slave_side;
         if (slave < 0)
           {
@@ -308,8 +310,18 @@ namespace dyncontact
   std::vector<MasterFace<dim>>
   ContactSetup<dim>::gather_faces(
     const SemiDiscreteSystem<dim>         &system,
-    const std::vector<types::boundary_id> &ids) const
+    const std::vector<types::boundary_id> &ids,
+    const std::vector<types::boundary_id> &symmetry_ids) const
   {
+    // sides of a face as pairs of its vertices (as in ContactMapping): 2D
+    // vertex 0, 1; 3D xi=0, xi=1, eta=0, eta=1
+    const std::vector<std::array<unsigned int, 2>> sides =
+      (dim == 2) ?
+        std::vector<std::array<unsigned int, 2>>{{{0, 0}}, {{1, 1}}} :
+        std::vector<std::array<unsigned int, 2>>{{{0, 2}},
+                                                 {{1, 3}},
+                                                 {{0, 1}},
+                                                 {{2, 3}}};
     const auto                  &fe               = system.get_fe();
     const auto                  &mesh_constraints = system.get_constraints();
     std::vector<MasterFace<dim>> local;
@@ -349,6 +361,24 @@ namespace dyncontact
                         master.node_dof0[node] = dof;
                     }
                 }
+              // a side shared with a face of the same cell on a plane of
+              // symmetry lies on that plane
+              for (const unsigned int f2 : cell->face_indices())
+                if (f2 != f && cell->face(f2)->at_boundary() &&
+                    std::find(symmetry_ids.begin(),
+                              symmetry_ids.end(),
+                              cell->face(f2)->boundary_id()) !=
+                      symmetry_ids.end())
+                  {
+                    std::set<unsigned int> plane;
+                    for (const unsigned int v :
+                         cell->face(f2)->vertex_indices())
+                      plane.insert(cell->face(f2)->vertex_index(v));
+                    for (unsigned int s = 0; s < sides.size(); ++s)
+                      if (plane.count(face->vertex_index(sides[s][0])) &&
+                          plane.count(face->vertex_index(sides[s][1])))
+                        master.on_symmetry_plane[s] = true;
+                  }
               local.push_back(master);
             }
     std::vector<MasterFace<dim>> all;

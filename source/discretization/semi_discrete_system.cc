@@ -174,7 +174,7 @@ namespace dyncontact
   void
   SemiDiscreteSystem<dim>::assemble(const Scene<dim> &scene)
   {
-    const auto tractions   = scene.neumann_tractions();
+    auto       tractions   = scene.neumann_tractions();
     const auto contact_ids = scene.all_contact_boundary_ids();
 
     const QGauss<dim> quadrature(fe.degree + 1);
@@ -186,6 +186,39 @@ namespace dyncontact
         Quadrature<dim>(QGauss<dim>(fe.degree + 1));
     const QGauss<dim - 1>        face_quadrature(fe.degree + 1);
     const QGaussLobatto<dim - 1> lumped_face_quadrature(fe.degree + 1);
+
+    // loads given as total forces: spread over the boundary as the mesh
+    // represents it, so that they sum to the force exactly
+    if (const auto forces = scene.neumann_forces(); !forces.empty())
+      {
+        FEFaceValues<dim>   area_values(mapping,
+                                      fe,
+                                      face_quadrature,
+                                      update_JxW_values);
+        std::vector<double> areas(forces.size(), 0.);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                for (unsigned int k = 0; k < forces.size(); ++k)
+                  if (cell->face(f)->boundary_id() == forces[k].first)
+                    {
+                      area_values.reinit(cell, f);
+                      for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                        areas[k] += area_values.JxW(q);
+                    }
+        Utilities::MPI::sum(areas, comm, areas);
+        for (unsigned int k = 0; k < forces.size(); ++k)
+          {
+            AssertThrow(areas[k] > 0.,
+                        ExcMessage("The scene loads boundary id " +
+                                   std::to_string(forces[k].first) +
+                                   " with a force, but no boundary face of "
+                                   "the mesh has that id."));
+            tractions.emplace_back(forces[k].first,
+                                   forces[k].second / areas[k]);
+          }
+      }
 
     FEValues<dim>     fe_values(mapping,
                             fe,

@@ -259,14 +259,24 @@ namespace dyncontact
 
 
   template <int dim>
-  std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
-  HertzScene<dim>::neumann_tractions() const
+  std::vector<types::boundary_id>
+  HertzScene<dim>::symmetry_boundary_ids() const
   {
-    // the full load over the full top (2D: width 2R; 3D: area pi R^2)
-    const double   area = (dim == 2) ? 2. * radius : M_PI * radius * radius;
-    Tensor<1, dim> traction;
-    traction[1] = -load / area;
-    return {{top_id, traction}};
+    if (dim == 3)
+      return {symmetry_x_id, symmetry_z_id};
+    return {symmetry_x_id};
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+  HertzScene<dim>::neumann_forces() const
+  {
+    // the share of the load on the meshed part: half (2D) or a quarter (3D)
+    Tensor<1, dim> force;
+    force[1] = -load / (dim == 2 ? 2. : 4.);
+    return {{top_id, force}};
   }
 
 

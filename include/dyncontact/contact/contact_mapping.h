@@ -22,7 +22,9 @@ namespace dyncontact
    * bilinear, as MappingQ1 sees it), the centre of its cell (to orient the
    * outward normal), and for each face node (FE_Q<dim-1>(p) numbering) and
    * displacement component the unconstrained DoFs it stands for (a hanging
-   * node expands into its parents, a Dirichlet DoF into nothing).
+   * node expands into its parents, a Dirichlet DoF into nothing), and which
+   * sides of the face (numbered as in closest_point_on_face) lie on a plane
+   * of symmetry of the model, across which the surface continues.
    */
   template <int dim>
   struct MasterFace
@@ -33,12 +35,13 @@ namespace dyncontact
       std::array<std::vector<std::pair<global_dof_index, double>>, dim>>
                                   node_dofs;
     std::vector<global_dof_index> node_dof0;
+    std::array<bool, 4> on_symmetry_plane{{false, false, false, false}};
 
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &vertices &cell_center &node_dofs &node_dof0;
+      ar &vertices &cell_center &node_dofs &node_dof0 &on_symmetry_plane;
     }
   };
 
@@ -91,7 +94,8 @@ namespace dyncontact
     struct Tree;
     std::vector<MasterFace<dim>> master_faces;
     /// For each face: is its side (see closest_point_on_face) on the rim of
-    /// the master surface, i.e. not shared with another master face?
+    /// the master surface, i.e. neither shared with another master face nor
+    /// on a plane of symmetry?
     std::vector<std::array<bool, 4>> rim;
     double                           radius;
     std::unique_ptr<Tree>            tree;

@@ -86,10 +86,13 @@ namespace dyncontact
     }
 
   private:
-    /// The contact faces with these boundary ids, from all ranks.
+    /// The contact faces with boundary ids @p ids, from all ranks; sides of
+    /// a face shared with a boundary face of @p symmetry_ids (a plane of
+    /// symmetry) are marked.
     std::vector<MasterFace<dim>>
     gather_faces(const SemiDiscreteSystem<dim>         &system,
-                 const std::vector<types::boundary_id> &ids) const;
+                 const std::vector<types::boundary_id> &ids,
+                 const std::vector<types::boundary_id> &symmetry_ids) const;
 
     const Parameters                     parameters;
     const MPI_Comm                       comm;

@@ -12,11 +12,12 @@ namespace dyncontact
    * block. By symmetry only x >= 0 (and z >= 0 in 3D) is meshed, with
    * rollers on the symmetry planes; the block's bottom is clamped. Body 1 is
    * the cylinder/ball ("Material"), body 2 the block ("Material of body
-   * 2"). The load is a traction on the flat top of the cylinder/ball; in the
-   * static scheme it gives Hertz's solution: in 2D (plane strain, load P per
-   * unit thickness) the half-width b = sqrt(4PR/(pi E*)) and the peak
-   * pressure p0 = 2P/(pi b); in 3D (load P) the radius a = (3PR/(4E*))^{1/3}
-   * and p0 = 3P/(2 pi a^2); 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
+   * 2"). The load is a uniform traction on the flat top of the cylinder/ball
+   * that sums to the load exactly on the mesh (3D: a polygon); in the static
+   * scheme it gives Hertz's solution: in 2D (plane strain, load P per unit
+   * thickness) the half-width b = sqrt(4PR/(pi E*)) and the peak pressure p0 =
+   * 2P/(pi b); in 3D (load P) the radius a = (3PR/(4E*))^{1/3} and p0 = 3P/(2
+   * pi a^2); 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
    *
    * The two registered scenes, "hertz" (2D, subsection Scene/Hertz) and "ball
    * on block" (3D, subsection Scene/Ball on block), are this class with
@@ -51,8 +52,11 @@ namespace dyncontact
     std::vector<DirichletBoundary>
     dirichlet_boundaries() const override;
 
+    std::vector<types::boundary_id>
+    symmetry_boundary_ids() const override;
+
     std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
-    neumann_tractions() const override;
+    neumann_forces() const override;
 
     Tensor<1, dim>
     initial_velocity(const Point<dim>  &x,

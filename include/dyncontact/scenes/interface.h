@@ -157,6 +157,15 @@ namespace dyncontact
       return {};
     }
 
+    /// Boundaries that are planes of symmetry of the model (rollers, as in
+    /// a half or quarter model): the bodies continue across them, so an edge
+    /// of a contact surface on such a plane is no rim of the surface.
+    virtual std::vector<types::boundary_id>
+    symmetry_boundary_ids() const
+    {
+      return {};
+    }
+
     /// Boundaries with homogeneous Dirichlet data.
     virtual std::vector<DirichletBoundary>
     dirichlet_boundaries() const
@@ -167,6 +176,16 @@ namespace dyncontact
     /// Constant Neumann tractions (Pa) per boundary id.
     virtual std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
     neumann_tractions() const
+    {
+      return {};
+    }
+
+    /// Constant Neumann loads given as total forces (N; in 2D per unit
+    /// thickness) per boundary id, spread uniformly over the boundary as
+    /// the mesh represents it (so that they sum to the force exactly, also
+    /// where a curved boundary is approximated by a polygon).
+    virtual std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+    neumann_forces() const
     {
       return {};
     }
