@@ -161,15 +161,7 @@ namespace dyncontact
         x[d] = p[d];
       return vertex_key(x, dim, scale);
     };
-    // sides of the unit face as vertex pairs: 2D vertex 0, 1; 3D xi=0
-    // (v0,v2), xi=1 (v1,v3), eta=0 (v0,v1), eta=1 (v2,v3)
-    const std::vector<std::array<unsigned int, 2>> sides =
-      (dim == 2) ?
-        std::vector<std::array<unsigned int, 2>>{{{0, 0}}, {{1, 1}}} :
-        std::vector<std::array<unsigned int, 2>>{{{0, 2}},
-                                                 {{1, 3}},
-                                                 {{0, 1}},
-                                                 {{2, 3}}};
+    const auto                                  sides = face_sides<dim>();
     std::map<std::pair<Key, Key>, unsigned int> count;
     auto side_key = [&](const MasterFace<dim> &face, const unsigned int s) {
       Key a = key(face.vertices[sides[s][0]]),

@@ -313,15 +313,7 @@ namespace dyncontact
     const std::vector<types::boundary_id> &ids,
     const std::vector<types::boundary_id> &symmetry_ids) const
   {
-    // sides of a face as pairs of its vertices (as in ContactMapping): 2D
-    // vertex 0, 1; 3D xi=0, xi=1, eta=0, eta=1
-    const std::vector<std::array<unsigned int, 2>> sides =
-      (dim == 2) ?
-        std::vector<std::array<unsigned int, 2>>{{{0, 0}}, {{1, 1}}} :
-        std::vector<std::array<unsigned int, 2>>{{{0, 2}},
-                                                 {{1, 3}},
-                                                 {{0, 1}},
-                                                 {{2, 3}}};
+    const auto                   sides            = face_sides<dim>();
     const auto                  &fe               = system.get_fe();
     const auto                  &mesh_constraints = system.get_constraints();
     std::vector<MasterFace<dim>> local;

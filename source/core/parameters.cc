@@ -13,12 +13,111 @@
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
 
 namespace dyncontact
 {
+  namespace
+  {
+    std::string
+    expand_includes(const std::string        &text,
+                    const std::string        &source,
+                    std::vector<std::string> &chain,
+                    std::vector<std::string> &chain_lines)
+    {
+      std::string body = text;
+      if (body.rfind("\xEF\xBB\xBF", 0) == 0)
+        body.erase(0, 3);
+      std::istringstream in(body);
+      std::ostringstream out;
+      unsigned int       line_number = 0;
+      for (std::string line; std::getline(in, line);)
+        {
+          ++line_number;
+          const auto first = line.find_first_not_of(" \t");
+          if (first == std::string::npos ||
+              line.compare(first, 8, "include ") != 0)
+            {
+              out << line << "\n";
+              continue;
+            }
+          std::string name = line.substr(first + 8);
+          name.erase(0, name.find_first_not_of(" \t"));
+          name.erase(name.find_last_not_of(" \t\r") + 1);
+          const std::string where =
+            "line " + std::to_string(line_number) + " of '" + source + "'";
+          AssertThrow(!name.empty(),
+                      ExcMessage(where + ": 'include' needs a file name."));
+          // relative names: the including file's folder, else the working
+          // directory
+          std::filesystem::path path(name);
+          if (path.is_relative())
+            {
+              const auto beside =
+                std::filesystem::path(source).parent_path() / path;
+              if (std::filesystem::exists(beside))
+                path = beside;
+            }
+          std::error_code   error;
+          const std::string canonical =
+            std::filesystem::weakly_canonical(path, error).string();
+          AssertThrow(std::filesystem::is_regular_file(path),
+                      ExcMessage(where + ": the included file '" + name +
+                                 "' does not exist or is not a regular "
+                                 "file."));
+          const auto cycle = std::find(chain.begin(), chain.end(), canonical);
+          if (cycle != chain.end())
+            {
+              std::string message =
+                "the parameter file '" + canonical + "' includes itself:";
+              for (auto c = cycle; c + 1 != chain.end(); ++c)
+                message += " '" + *c + "' includes '" + *(c + 1) +
+                           "' at line " + chain_lines[c - chain.begin()] + ";";
+              message += " '" + chain.back() + "' includes '" + canonical +
+                         "' at line " + std::to_string(line_number) + ".";
+              AssertThrow(false, ExcMessage(message));
+            }
+          AssertThrow(chain.size() < 32,
+                      ExcMessage(where + ": more than 32 nested 'include' "
+                                         "levels."));
+          std::ifstream file(path);
+          AssertThrow(file.good(),
+                      ExcMessage(where + ": cannot read the included file '" +
+                                 name + "'."));
+          std::stringstream included;
+          included << file.rdbuf();
+          chain_lines.push_back(std::to_string(line_number));
+          chain.push_back(canonical);
+          out << expand_includes(included.str(),
+                                 path.string(),
+                                 chain,
+                                 chain_lines);
+          chain.pop_back();
+          chain_lines.pop_back();
+        }
+      return out.str();
+    }
+  } // namespace
+
+
+
+  std::string
+  expand_includes(const std::string &text, const std::string &source)
+  {
+    std::error_code          error;
+    std::vector<std::string> chain = {
+      std::filesystem::weakly_canonical(source, error).string()};
+    std::vector<std::string> chain_lines;
+    return expand_includes(text, source, chain, chain_lines);
+  }
+
+
+
   void
   GlobalParameters::declare_parameters(ParameterHandler &prm)
   {

@@ -16,10 +16,11 @@ namespace dyncontact
                  const MPI_Comm     comm,
                  const std::string &source)
   {
-    check_for_misplaced_entries(prm_text, source);
+    const std::string text = expand_includes(prm_text, source);
+    check_for_misplaced_entries(text, source);
     ParameterHandler prm;
     declare_all_parameters(prm);
-    std::istringstream in(prm_text);
+    std::istringstream in(text);
     prm.parse_input(in, source);
 
     std::string input_directory;

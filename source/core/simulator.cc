@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/memory_check.h>
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
@@ -17,6 +18,20 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// @p x with six significant digits.
+    std::string
+    number(const double x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &input_directory,
@@ -54,6 +69,10 @@ namespace dyncontact
     postprocessors->parse_parameters(prm);
     scene = create_scene<dim>(prm, input_directory);
     contact->check(*scene);
+    if (!scene->input_checksum().empty())
+      checkpoints.add_critical_parameter(scene->subsection() +
+                                           "/(checksum of the input files)",
+                                         scene->input_checksum());
     AssertThrow(!(mesh_adaptor->adapts_during_run() &&
                   (reference_states->writes() || reference_states->compares())),
                 ExcMessage(
@@ -79,10 +98,34 @@ namespace dyncontact
   Simulator<dim>::build_mesh()
   {
     TimerOutput::Scope t(*timer, "setup");
+    // refuse a mesh that would not fit into memory before allocating it
+    const unsigned int degree = system->get_fe().degree;
+    const std::string  remedy = "Mesh/Initial global refinements (now " +
+                               std::to_string(parameters.initial_refinements) +
+                               ") or the cell counts in " + scene->subsection();
+    const double coarse = scene->n_coarse_cells();
+    check_mesh_fits_in_memory(coarse *
+                                std::pow(2.,
+                                         dim * parameters.initial_refinements),
+                              dim,
+                              degree,
+                              coarse,
+                              remedy,
+                              comm);
     scene->create_coarse_mesh(triangulation);
     if (!checkpoints.resume())
       {
-        triangulation.refine_global(parameters.initial_refinements);
+        for (unsigned int k = 0; k < parameters.initial_refinements; ++k)
+          {
+            check_mesh_fits_in_memory(triangulation.n_global_active_cells() *
+                                        std::pow(2., dim),
+                                      dim,
+                                      degree,
+                                      triangulation.n_cells(0),
+                                      remedy,
+                                      comm);
+            triangulation.refine_global(1);
+          }
         scene->refine_initial_mesh(triangulation);
       }
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -151,7 +194,6 @@ namespace dyncontact
       }
     system->interpolate_initial_values(*scene, u, udot);
     make_integrator();
-    postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
 
     // an initially penetrating configuration (allowed only with 'Initial
     // penetration = project'): the M-projection onto K_h
@@ -173,9 +215,35 @@ namespace dyncontact
                 ExcMessage("The initial velocity of " + scheme.name +
                            " (eq. 12c) could not be computed: " +
                            report.failure() + "."));
+    initial_report = report;
     record_statistics();
-    if (vtu_writer->is_enabled())
-      vtu_writer->write(0.);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::open_outputs()
+  {
+    postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
+    if (vtu_writer->is_enabled() && !checkpoints.resume())
+      {
+        // the initial state: after a first step u_old, udot_old and the
+        // initial report
+        const bool after_step = control.get_step() > 0;
+        auto       swap_state = [&]() {
+          if (after_step)
+            {
+              std::swap(u, u_old);
+              std::swap(udot, udot_old);
+              std::swap(report, initial_report);
+            }
+        };
+        swap_state();
+        vtu_writer->write(0.);
+        swap_state();
+      }
+    outputs_open = true;
   }
 
 
@@ -191,11 +259,17 @@ namespace dyncontact
     setup_discretization();
     system->deserialize(u, udot);
     control.load(state);
+    AssertThrow(control.get_end_time() > control.get_time(),
+                ExcMessage("Time integration/End time = " +
+                           number(control.get_end_time()) +
+                           " s is not after the checkpoint's time t = " +
+                           number(control.get_time()) +
+                           " s: a resumed run needs a later End time."));
     make_integrator();
     integrator->load(state);
     vtu_writer->load(state);
     mesh_adaptor->load(state);
-    postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
+    open_outputs();
     pcout << "   resumed from " << dir << " at step " << control.get_step()
           << ", t = " << control.get_time() << " s" << std::endl;
   }
@@ -208,6 +282,16 @@ namespace dyncontact
   {
     TimerOutput::Scope t(*timer, "diagnostics");
     postprocessors->execute();
+    // a statistic that is not finite stops the run
+    const auto &statistics = postprocessors->get_statistics();
+    for (unsigned int c = 0; c < statistics.columns.size(); ++c)
+      AssertThrow(std::isfinite(statistics.rows.back()[c]),
+                  ExcMessage("step " + std::to_string(control.get_step()) +
+                             " (t = " + number(control.get_time()) +
+                             " s): the statistic '" + statistics.columns[c] +
+                             "' is " + number(statistics.rows.back()[c]) +
+                             ". Check the input for values far outside "
+                             "physical ranges (lengths, moduli, densities)."));
     reference_states->write(control.get_time());
     mesh_adaptor->start_new_row();
   }
@@ -271,8 +355,22 @@ namespace dyncontact
   void
   Simulator<dim>::stop_after_failed_step(const bool finite)
   {
-    const std::string  dir = write_checkpoint();
     std::ostringstream message;
+    if (control.get_step() == 0 && !checkpoints.resume())
+      {
+        // nothing to keep: the output directory stays as it was
+        message << std::setprecision(6)
+                << "the first step (tau = " << control.get_timestep()
+                << " s) failed: "
+                << (finite && !report.converged() ?
+                      report.failure() :
+                      "the solution is not finite")
+                << ". Nothing was written. Try a smaller Time integration/Time "
+                   "step, or set 'Time integration/Time step adaptation = "
+                   "true'.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    const std::string dir = write_checkpoint();
     message << std::setprecision(6) << "step " << control.get_step() + 1
             << " (from t = " << control.get_time()
             << " s, tau = " << control.get_timestep() << " s) failed: "
@@ -298,7 +396,8 @@ namespace dyncontact
           << std::endl;
     // the output directory must be writable; nothing in it is touched
     // before the setup has succeeded
-    prepare_output_directory(parameters.output_directory, comm);
+    output_directory =
+      std::make_unique<OutputDirectory>(parameters.output_directory, comm);
     build_mesh();
     if (checkpoints.resume())
       resume();
@@ -336,6 +435,8 @@ namespace dyncontact
         step_timer.stop();
         step_wall_time = step_timer.wall_time();
         record_statistics();
+        if (!outputs_open)
+          open_outputs();
         if (vtu_writer->is_enabled() && control.output_due())
           {
             vtu_writer->write(control.get_time());
@@ -350,6 +451,8 @@ namespace dyncontact
             control.checkpoint_written();
           }
       }
+    if (!outputs_open)
+      open_outputs();
     timer->print_summary();
   }
 

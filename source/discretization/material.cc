@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <dyncontact/core/input_checks.h>
 #include <dyncontact/discretization/material.h>
 
 #include <cmath>
@@ -25,7 +26,7 @@ namespace dyncontact
     prm.declare_entry("Young's modulus",
                       "1",
                       Patterns::Double(),
-                      "Young's modulus E of the body, in Pa. Must be > 0.");
+                      "Young's modulus E of the body, in Pa, 1e-12 to 1e15.");
     prm.declare_entry("Poisson's ratio",
                       "0",
                       Patterns::Double(),
@@ -34,12 +35,12 @@ namespace dyncontact
     prm.declare_entry("Density",
                       "1",
                       Patterns::Double(),
-                      "Mass density rho, in kg/m^3. Must be > 0.");
+                      "Mass density rho, in kg/m^3, 1e-9 to 1e6.");
     prm.declare_entry(
       "Viscous shear modulus",
       "0",
       Patterns::Double(),
-      "Kelvin-Voigt viscous shear modulus mu_v, in Pa s (>= 0). Together "
+      "Kelvin-Voigt viscous shear modulus mu_v, in Pa s, 0 to 1e18. Together "
       "with the viscous Lame parameter it defines the viscous form b(u,v) = "
       "int 2 mu_v eps(u):eps(v) + lambda_v div u div v. Both zero: an "
       "elastic body, and no viscous matrix is assembled.");
@@ -74,28 +75,25 @@ namespace dyncontact
     viscous_lambda        = prm.get_double("Viscous Lame parameter");
     prm.leave_subsection();
 
-    AssertThrow(std::isfinite(youngs_modulus) && youngs_modulus > 0.,
-                ExcMessage(subsection +
-                           "/Young's modulus must be a finite number > 0 "
-                           "(Pa); got " +
-                           number(youngs_modulus) + "."));
+    check_in_range(
+      youngs_modulus, 1e-12, 1e15, subsection + "/Young's modulus", "Pa");
     AssertThrow(std::isfinite(poissons_ratio) && poissons_ratio > -1. &&
                   poissons_ratio < 0.5,
                 ExcMessage(subsection +
                            "/Poisson's ratio must lie in the open "
                            "interval (-1, 0.5); got " +
                            number(poissons_ratio) + "."));
-    AssertThrow(std::isfinite(density) && density > 0.,
+    check_in_range(density, 1e-9, 1e6, subsection + "/Density", "kg/m^3");
+    check_in_range(viscous_shear_modulus,
+                   0.,
+                   1e18,
+                   subsection + "/Viscous shear modulus",
+                   "Pa s");
+    AssertThrow(std::abs(viscous_lambda) <= 1e18,
                 ExcMessage(subsection +
-                           "/Density must be a finite number > 0 "
-                           "(kg/m^3); got " +
-                           number(density) + "."));
-    AssertThrow(std::isfinite(viscous_shear_modulus) &&
-                  viscous_shear_modulus >= 0.,
-                ExcMessage(subsection +
-                           "/Viscous shear modulus must be a finite "
-                           "number >= 0 (Pa s); got " +
-                           number(viscous_shear_modulus) + "."));
+                           "/Viscous Lame parameter must lie in [-1e18, "
+                           "1e18] (Pa s); got " +
+                           number(viscous_lambda) + "."));
     AssertThrow(std::isfinite(viscous_lambda) &&
                   viscous_lambda + 2. * viscous_shear_modulus / 3. >= 0.,
                 ExcMessage(subsection +

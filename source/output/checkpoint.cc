@@ -1,8 +1,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <boost/crc.hpp>
+
 #include <dyncontact/output/checkpoint.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -106,13 +109,26 @@ namespace dyncontact
   {
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        // key, length, value: values may hold anything (lines, spaces)
-        std::ofstream out(dir + "/state.txt");
-        out << "dyncontact-checkpoint 1\n";
+        // key, length, value: values may hold anything (lines, spaces);
+        // then the size and checksum of every other file, and the checksum
+        // of all of this
+        std::ostringstream text;
+        text << "dyncontact-checkpoint 2\n";
         for (const auto &[key, value] : state)
-          out << key << " " << value.size() << "\n" << value << "\n";
-        out << "critical_parameters " << critical_parameters.size() << "\n"
-            << critical_parameters << "\n";
+          text << key << " " << value.size() << "\n" << value << "\n";
+        text << "critical_parameters " << critical_parameters.size() << "\n"
+             << critical_parameters << "\n";
+        std::ostringstream files;
+        for (const auto &entry : std::filesystem::directory_iterator(dir))
+          if (entry.path().filename() != "state.txt")
+            files << entry.path().filename().string() << " "
+                  << entry.file_size() << " "
+                  << checksum_of_file(entry.path().string()) << "\n";
+        text << "files " << files.str().size() << "\n" << files.str() << "\n";
+        boost::crc_32_type crc;
+        crc.process_bytes(text.str().data(), text.str().size());
+        std::ofstream out(dir + "/state.txt");
+        out << text.str() << "checksum " << std::hex << crc.checksum() << "\n";
         out.close();
         AssertThrow(out.good(),
                     ExcMessage("Cannot write the checkpoint '" + dir + "'."));
@@ -153,20 +169,29 @@ namespace dyncontact
   std::map<std::string, std::string>
   Checkpoints::read_state(const std::string &dir) const
   {
-    std::ifstream in(dir + "/state.txt");
-    AssertThrow(in.good(),
+    // rank 0 verifies every file of the checkpoint before anything is read
+    std::string problem;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      problem = verify(dir);
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    AssertThrow(problem.empty(),
                 ExcMessage("Checkpointing/Resume: the checkpoint '" + dir +
-                           "' has no readable state.txt."));
+                           "' cannot be used: " + problem +
+                           ". Remove it (the previous checkpoint, if any, "
+                           "is kept next to it) or start afresh."));
+
+    std::ifstream in(dir + "/state.txt");
     const auto  damaged = ExcMessage("Checkpointing/Resume: the checkpoint '" +
                                     dir + "' is damaged.");
     std::string header;
     std::getline(in, header);
-    AssertThrow(header == "dyncontact-checkpoint 1", damaged);
     std::map<std::string, std::string> state;
     std::string                        key;
     std::size_t                        length = 0;
     while (in >> key >> length)
       {
+        if (key == "checksum")
+          break;
         AssertThrow(length < (std::size_t(1) << 32), damaged);
         in.get();
         std::string value(length, '\0');
@@ -192,5 +217,85 @@ namespace dyncontact
                                la + "', this input '" + lb + "'."));
       }
     return state;
+  }
+
+
+  void
+  Checkpoints::add_critical_parameter(const std::string &name,
+                                      const std::string &value)
+  {
+    critical_parameters += name + " = " + value + "\n";
+  }
+
+
+
+  std::string
+  Checkpoints::checksum_of_file(const std::string &name)
+  {
+    boost::crc_32_type crc;
+    std::ifstream      in(name, std::ios::binary);
+    std::vector<char>  buffer(1 << 20);
+    while (in)
+      {
+        in.read(buffer.data(), buffer.size());
+        crc.process_bytes(buffer.data(), in.gcount());
+      }
+    std::ostringstream s;
+    s << std::hex << crc.checksum();
+    return s.str();
+  }
+
+
+
+  std::string
+  Checkpoints::verify(const std::string &dir)
+  {
+    const std::string state_file = dir + "/state.txt";
+    if (!std::filesystem::is_regular_file(state_file))
+      return "its file state.txt is missing";
+    std::ifstream     in(state_file, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    if (text.rfind("dyncontact-checkpoint 2\n", 0) != 0)
+      return "state.txt is not a checkpoint state of this program's version";
+    // the last line: "checksum <crc of everything before it>"
+    const auto last =
+      text.rfind("checksum ", text.size() < 2 ? 0 : text.size() - 2);
+    if (last == std::string::npos || text.back() != '\n' ||
+        (last > 0 && text[last - 1] != '\n'))
+      return "state.txt is truncated (its checksum line is missing)";
+    boost::crc_32_type crc;
+    crc.process_bytes(text.data(), last);
+    std::ostringstream expected;
+    expected << "checksum " << std::hex << crc.checksum() << "\n";
+    if (text.substr(last) != expected.str())
+      return "state.txt is damaged (its checksum does not match)";
+
+    // the listed files: present, of their size and checksum
+    const auto files_at = text.rfind("\nfiles ", last);
+    if (files_at == std::string::npos)
+      return "state.txt lists no files";
+    std::istringstream files(text.substr(files_at + 7, last - files_at - 7));
+    std::size_t        length = 0;
+    files >> length;
+    std::string name, checksum;
+    std::size_t size = 0;
+    while (files >> name >> size >> checksum)
+      {
+        const std::string file = dir + "/" + name;
+        if (!std::filesystem::is_regular_file(file))
+          return "its file '" + name + "' is missing";
+        if (std::filesystem::file_size(file) != size)
+          return "its file '" + name + "' has " +
+                 std::to_string(std::filesystem::file_size(file)) +
+                 " bytes instead of " + std::to_string(size) +
+                 " (truncated or changed)";
+        if (checksum_of_file(file) != checksum)
+          return "its file '" + name +
+                 "' is damaged (its checksum does not "
+                 "match)";
+      }
+    return "";
   }
 } // namespace dyncontact

@@ -2,12 +2,23 @@
 // f^T u, and the viscous dissipation W_visc += (du)^T B (du) / tau,
 // accumulated over the steps; E_kin + E_el + W_visc is constant without
 // contact and non-increasing with contact.
+//
+// The balance monitor: energy_balance = E + W_visc - E(0) minus the energy
+// changes of mesh transfers, which Theorem 3.2 keeps <= 0 up to the linear
+// solver's tolerance. A step that raises it by more than
+// 1e3 * Linear solver tolerance (but within [1e-9, 1e-4]) times the run's
+// energy scale
+// gets a warning with the step, the size and the remedy.
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <dyncontact/core/simulation_control.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -25,7 +36,19 @@ namespace dyncontact
         return {"energy_kinetic",
                 "energy_elastic",
                 "dissipation_viscous",
-                "energy_total"};
+                "energy_total",
+                "energy_balance"};
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Contact solver");
+        tolerance =
+          std::min(1e-4,
+                   std::max(1e-9,
+                            1e3 * prm.get_double("Linear solver tolerance")));
+        prm.leave_subsection();
       }
 
       void
@@ -43,26 +66,75 @@ namespace dyncontact
             system.get_viscous_matrix().vmult(B_du, du);
             dissipation += (B_du * du) / this->get_integrator().time_step();
           }
+        const double       total = kinetic + elastic + dissipation;
+        const unsigned int step  = this->get_control().get_step();
+        if (step == 0)
+          initial = total;
+        else
+          transfers += this->get_mesh_adaptor().get_energy_transfer();
+        const double balance = total - initial - transfers;
+        scale = std::max(scale, kinetic + std::abs(elastic) + dissipation);
+        if (step > 0 && !this->get_integrator().get_scheme().is_static &&
+            balance - previous_balance > tolerance * scale)
+          {
+            ++n_increases;
+            if (n_increases <= 3)
+              this->get_pcout()
+                << std::setprecision(3) << "   warning: step " << step
+                << " (t = " << this->get_control().get_time()
+                << " s): E + W_visc grew by " << balance - previous_balance
+                << " J (" << 100. * (balance - previous_balance) / scale
+                << "% of the energy), which Theorem 3.2 excludes. The "
+                   "linear solver stops too early for this problem (e.g. a "
+                   "viscosity that dominates the step matrix): lower "
+                   "'Contact solver/Linear solver tolerance'."
+                << (n_increases == 3 ? " (Further such warnings are not "
+                                       "printed; see the column "
+                                       "energy_balance.)" :
+                                       "")
+                << std::endl;
+          }
+        previous_balance = balance;
         row.insert(row.end(),
-                   {kinetic, elastic, dissipation, kinetic + elastic});
+                   {kinetic, elastic, dissipation, kinetic + elastic, balance});
       }
 
       void
       save(std::map<std::string, std::string> &state) const override
       {
         std::ostringstream s;
-        s << std::setprecision(17) << dissipation;
+        s << std::setprecision(17) << dissipation << " " << initial << " "
+          << transfers << " " << scale << " " << previous_balance << " "
+          << n_increases;
         state["viscous_dissipation"] = s.str();
       }
 
       void
       load(const std::map<std::string, std::string> &state) override
       {
-        dissipation = std::stod(state.at("viscous_dissipation"));
+        std::istringstream s(state.at("viscous_dissipation"));
+        // token by token: std::stod reads nan and inf, operator>> does not
+        std::string token;
+        for (double *value :
+             {&dissipation, &initial, &transfers, &scale, &previous_balance})
+          {
+            s >> token;
+            AssertThrow(!s.fail(),
+                        ExcMessage("the energies in the checkpoint are "
+                                   "damaged"));
+            *value = std::stod(token);
+          }
+        s >> n_increases;
       }
 
     private:
-      double dissipation = 0.;
+      double       dissipation      = 0.;
+      double       tolerance        = 1e-9;
+      double       initial          = 0.;
+      double       transfers        = 0.;
+      double       scale            = 0.;
+      double       previous_balance = 0.;
+      unsigned int n_increases      = 0;
     };
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Energy,

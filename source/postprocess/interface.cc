@@ -117,7 +117,10 @@ namespace dyncontact
       std::istringstream rows(state.at("statistics"));
       std::size_t        n_rows = 0;
       rows >> n_rows;
-      AssertThrow(!rows.fail() && n_rows <= 100000000,
+      // every value takes at least two characters: a count beyond that is
+      // damage and must not drive an allocation
+      AssertThrow(!rows.fail() && n_rows * statistics.columns.size() <=
+                                    state.at("statistics").size() / 2,
                   ExcMessage("the statistics in the checkpoint are damaged"));
       statistics.rows.assign(n_rows,
                              std::vector<double>(statistics.columns.size()));

@@ -1,8 +1,10 @@
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include <dyncontact/core/input_checks.h>
 #include <dyncontact/scenes/bar_impact.h>
 
 #include <algorithm>
@@ -66,17 +68,19 @@ namespace dyncontact
     prm.declare_entry("Length",
                       "1",
                       Patterns::Double(),
-                      "Length L of the bar along x, in m (> 0).");
+                      "Length L of the bar along x, in m, 1e-9 to 1e9.");
     prm.declare_entry("Height",
                       "0.1",
                       Patterns::Double(),
                       "Height (and, in 3D, width) of the bar, in "
-                      "m (> 0).");
+                      "m, 1e-9 to 1e9, and at least 1/1000 of a cell's "
+                      "length.");
     prm.declare_entry("Impact velocity",
                       "1",
                       Patterns::Double(),
-                      "Initial speed v0 towards the wall, in m/s "
-                      "(> 0).");
+                      "Initial speed v0 towards the wall, in m/s, "
+                      "0 to 1e9 (0: the bar rests; it touches the wall only "
+                      "if Initial gap <= 0 or a load pushes it).");
     prm.declare_entry("Initial gap",
                       "0.1",
                       Patterns::Double(),
@@ -95,7 +99,10 @@ namespace dyncontact
                       Patterns::Double(),
                       "A uniform initial axial strain eps0 (u0 = "
                       "eps0 x e_x, dimensionless, > -1); nonzero values make "
-                      "the bar vibrate (the exact solution is then unknown).");
+                      "the bar vibrate. The exact solution then follows from "
+                      "d'Alembert's solution along the characteristics, but "
+                      "the program does not compute it: no error norm is "
+                      "reported. Cannot be combined with Fixed far end.");
     prm.declare_entry("Fixed far end",
                       "false",
                       Patterns::Bool(),
@@ -105,13 +112,16 @@ namespace dyncontact
                       "0",
                       Patterns::Double(),
                       "A constant body force density along the "
-                      "bar's axis e_x, in N/m^3.");
+                      "bar's axis, in N/m^3; positive values point along "
+                      "+e_x, away from the wall (which is at x = -g0).");
     prm.declare_entry("End traction",
                       "0",
                       Patterns::Double(),
                       "A constant traction along the bar's axis "
-                      "e_x on the end x = 0 (a Neumann boundary that is also "
-                      "the contact boundary), in Pa.");
+                      "on the end x = 0 (a Neumann boundary that is also "
+                      "the contact boundary), in Pa; positive values point "
+                      "along +e_x, away from the wall (pulling the end off "
+                      "it), negative values press it towards the wall.");
     prm.declare_entry("Rotation angle",
                       "0",
                       Patterns::Double(),
@@ -143,16 +153,30 @@ namespace dyncontact
     prm.leave_subsection();
     prm.leave_subsection();
 
-    AssertThrow(std::isfinite(length) && length > 0.,
+    const std::string section = "Scene/Bar impact/";
+    check_in_range(length, 1e-9, 1e9, section + "Length", "m");
+    check_in_range(height, 1e-9, 1e9, section + "Height", "m");
+    check_in_range(
+      impact_velocity, 0., 1e9, section + "Impact velocity", "m/s");
+    // cells across follow from the aspect ratio, at least one: a bar far
+    // thinner than its cells would have degenerate cells
+    const double cell_aspect = length / cells_along_length /
+                               std::min(height, length / cells_along_length);
+    AssertThrow(cell_aspect <= 1e3,
                 ExcMessage(
-                  "Scene/Bar impact/Length must be a finite number > 0 (m)."));
-    AssertThrow(std::isfinite(height) && height > 0.,
+                  section + "Height = " + Utilities::to_string(height) +
+                  " m is less than 1/1000 of a cell's length (" + section +
+                  "Length / " + section + "Cells along length = " +
+                  Utilities::to_string(length / cells_along_length) +
+                  " m): the cells would be degenerate. Use more cells "
+                  "along the length or a thicker bar."));
+    AssertThrow(!(fixed_far_end && initial_strain != 0.),
                 ExcMessage(
-                  "Scene/Bar impact/Height must be a finite number > 0 (m)."));
-    AssertThrow(
-      std::isfinite(impact_velocity) && impact_velocity >= 0.,
-      ExcMessage(
-        "Scene/Bar impact/Impact velocity must be a finite number >= 0 (m/s)."));
+                  section + "Initial strain = " +
+                  Utilities::to_string(initial_strain) + " and " + section +
+                  "Fixed far end = true cannot be combined: the clamp would "
+                  "cut off the strained displacement at x = L (a jump in the "
+                  "last cell). Use one of them."));
     AssertThrow(
       std::isfinite(axial_body_force) && std::isfinite(end_traction),
       ExcMessage(
@@ -193,6 +217,17 @@ namespace dyncontact
     w[0]             = std::cos(angle) * v[0] + std::sin(angle) * v[1];
     w[1]             = -std::sin(angle) * v[0] + std::cos(angle) * v[1];
     return w;
+  }
+
+
+
+  template <int dim>
+  double
+  BarImpact<dim>::n_coarse_cells() const
+  {
+    const double n_across =
+      std::max(1., std::round(double(cells_along_length) * height / length));
+    return cells_along_length * std::pow(n_across, dim - 1);
   }
 
 

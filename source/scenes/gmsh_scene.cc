@@ -3,11 +3,17 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
+#include <dyncontact/output/checkpoint.h>
 #include <dyncontact/scenes/gmsh_scene.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
+#include <unordered_set>
 
 namespace dyncontact
 {
@@ -19,11 +25,12 @@ namespace dyncontact
       std::set<unsigned int> tags;
       for (const auto &item : Utilities::split_string_list(text, ','))
         {
-          const int tag = Utilities::string_to_int(item);
-          AssertThrow(tag >= 0,
+          char      *end = nullptr;
+          const long tag = std::strtol(item.c_str(), &end, 10);
+          AssertThrow(!item.empty() && *end == '\0' && tag >= 0 && tag < 65535,
                       ExcMessage("Scene/Gmsh/" + entry +
                                  " must be a comma-separated list of "
-                                 "non-negative physical tags; got '" +
+                                 "physical tags (integers 0 to 65534); got '" +
                                  text + "'."));
           tags.insert(tag);
         }
@@ -42,14 +49,266 @@ namespace dyncontact
       Tensor<1, dim> v;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          v[d] = Utilities::string_to_double(items[d]);
-          AssertThrow(std::isfinite(v[d]),
+          char *end = nullptr;
+          v[d]      = std::strtod(items[d].c_str(), &end);
+          AssertThrow(!items[d].empty() && *end == '\0' && std::isfinite(v[d]),
                       ExcMessage("Scene/Gmsh/" + entry +
                                  " must have finite components; got '" + text +
                                  "'."));
         }
       return v;
     }
+
+    /**
+     * Reads the ASCII .msh file @p name (format 2.2 or 4.x) once before
+     * deal.II's GridIn does, so that what GridIn cannot read gets a message
+     * naming the file and line: a directory, an empty, binary or truncated
+     * file, coordinates that are not finite numbers, elements that refer to
+     * missing nodes, and elements other than points, lines, quadrilaterals
+     * and (in 3D) hexahedra. Returns the number of cells (quadrilaterals in
+     * 2D, hexahedra in 3D).
+     */
+    std::size_t
+    check_msh_file(const std::string &name, const int dim)
+    {
+      const std::string file = "Scene/Gmsh/Mesh file '" + name + "'";
+      AssertThrow(std::filesystem::exists(name),
+                  ExcMessage(file + " does not exist."));
+      AssertThrow(std::filesystem::is_regular_file(name),
+                  ExcMessage(file + " is not a regular file."));
+      std::ifstream in(name);
+      AssertThrow(in.good(), ExcMessage(file + " cannot be opened."));
+      AssertThrow(std::filesystem::file_size(name) > 0,
+                  ExcMessage(file + " is empty."));
+
+      std::size_t line_number = 0;
+      std::string line;
+      auto        next = [&](const std::string &what) -> std::istringstream {
+        AssertThrow(std::getline(in, line),
+                    ExcMessage(file + " ends at line " +
+                               std::to_string(line_number) + " while " + what +
+                               " were expected: the file is truncated."));
+        ++line_number;
+        if (!line.empty() && line.back() == '\r')
+          line.pop_back();
+        return std::istringstream(line);
+      };
+      auto fail = [&](const std::string &what) {
+        AssertThrow(false,
+                    ExcMessage(file + ", line " + std::to_string(line_number) +
+                               ": " + what + " (the line reads '" +
+                               line.substr(0, 80) + "')."));
+      };
+      auto read_count = [&](std::istringstream &s, const std::string &what) {
+        long long n = -1;
+        s >> n;
+        if (s.fail() || n < 0)
+          fail("expected the number of " + what);
+        return std::size_t(n);
+      };
+      // nodes per element of the Gmsh element types
+      const std::map<int, unsigned int> nodes_per_element = {{1, 2},
+                                                             {2, 3},
+                                                             {3, 4},
+                                                             {4, 4},
+                                                             {5, 8},
+                                                             {6, 6},
+                                                             {7, 5},
+                                                             {8, 3},
+                                                             {9, 6},
+                                                             {10, 9},
+                                                             {11, 10},
+                                                             {12, 27},
+                                                             {15, 1},
+                                                             {16, 8},
+                                                             {17, 20}};
+      auto                              check_type = [&](const int type) {
+        if (type == 15 || type == 1 || type == 3 || (dim == 3 && type == 5))
+          return;
+        if (type == 2 || type == 4 || type == 6 || type == 7)
+          fail(
+            std::string("the mesh has ") +
+            (type == 2 ? "triangles" :
+                                          type == 4 ? "tetrahedra" :
+                                          type == 6 ? "prisms" :
+                                                      "pyramids") +
+            ", but only quadrilaterals (2D) and hexahedra (3D) are "
+                                         "supported. Let Gmsh recombine the mesh: 'Mesh.RecombineAll = "
+                                         "1;' (2D), plus 'Mesh.Recombine3DAll = 1;' or transfinite "
+                                         "volumes with 'Recombine Volume' (3D), or 'Mesh.SubdivisionAlgorithm "
+                                         "= 1;' (2D) / '= 2;' (3D) to split every element into "
+                                         "quadrilaterals/hexahedra");
+        fail("element type " + std::to_string(type) +
+             " is not supported: only first-order points, lines, "
+                                          "quadrilaterals and (3D) hexahedra");
+      };
+
+      int                           version = 0;
+      bool                          nodes = false, elements = false;
+      std::size_t                   n_cells = 0;
+      std::unordered_set<long long> node_ids;
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+          if (line == "$MeshFormat")
+            {
+              auto   s      = next("the format");
+              double format = 0.;
+              int    binary = -1;
+              s >> format >> binary;
+              if (s.fail())
+                fail("expected 'version file-type data-size'");
+              if (binary != 0)
+                fail("binary .msh files are not supported; save the mesh "
+                     "as ASCII (gmsh -save -format msh2 or msh4)");
+              version = int(format);
+              if (version != 2 && version != 4)
+                fail("the .msh format " + std::to_string(format) +
+                     " is not supported (2.2 and 4.1 are)");
+            }
+          else if (line == "$Nodes")
+            {
+              if (version == 0)
+                fail("$Nodes before $MeshFormat: this is no .msh file");
+              auto        s      = next("the node counts");
+              std::size_t blocks = 1, n = 0;
+              if (version == 4)
+                blocks = read_count(s, "node blocks");
+              n = read_count(s, "nodes");
+              if (std::min<std::size_t>(n, 1u << 20) >
+                  std::filesystem::file_size(name))
+                fail("more nodes than the file could hold");
+              std::size_t read = 0;
+              for (std::size_t b = 0; b < blocks; ++b)
+                {
+                  std::size_t            in_block = n;
+                  std::vector<long long> tags;
+                  if (version == 4)
+                    {
+                      auto sb = next("a node block header");
+                      int  entity_dim, entity_tag, parametric;
+                      sb >> entity_dim >> entity_tag >> parametric;
+                      in_block = read_count(sb, "nodes in the block");
+                      if (parametric != 0)
+                        fail("parametric nodes are not supported");
+                      for (std::size_t k = 0; k < in_block; ++k)
+                        {
+                          auto      st  = next("node tags");
+                          long long tag = -1;
+                          st >> tag;
+                          if (st.fail())
+                            fail("expected a node tag");
+                          tags.push_back(tag);
+                        }
+                    }
+                  for (std::size_t k = 0; k < in_block; ++k)
+                    {
+                      auto      sn = next("nodes");
+                      long long id = 0;
+                      if (version == 2)
+                        sn >> id;
+                      else
+                        id = tags[k];
+                      std::string x[3];
+                      sn >> x[0] >> x[1] >> x[2];
+                      if (sn.fail())
+                        fail("expected a node with three coordinates");
+                      for (const auto &c : x)
+                        {
+                          char  *end   = nullptr;
+                          double value = std::strtod(c.c_str(), &end);
+                          if (*end != '\0' || !std::isfinite(value))
+                            fail("the coordinate '" + c +
+                                 "' is not a finite number");
+                        }
+                      node_ids.insert(id);
+                      ++read;
+                    }
+                }
+              if (read != n)
+                fail("the node blocks hold " + std::to_string(read) +
+                     " nodes, the header says " + std::to_string(n));
+              if (next("$EndNodes").str() != "$EndNodes")
+                fail("expected $EndNodes");
+              nodes = true;
+            }
+          else if (line == "$Elements")
+            {
+              if (!nodes)
+                fail("$Elements before $Nodes");
+              auto        s      = next("the element counts");
+              std::size_t blocks = 1, n = 0;
+              if (version == 4)
+                blocks = read_count(s, "element blocks");
+              n = read_count(s, "elements");
+              for (std::size_t b = 0; b < blocks; ++b)
+                {
+                  std::size_t in_block = n;
+                  int         type     = 0;
+                  if (version == 4)
+                    {
+                      auto sb = next("an element block header");
+                      int  entity_dim, entity_tag;
+                      sb >> entity_dim >> entity_tag >> type;
+                      in_block = read_count(sb, "elements in the block");
+                      check_type(type);
+                    }
+                  for (std::size_t k = 0; k < in_block; ++k)
+                    {
+                      auto      se = next("elements");
+                      long long id = 0;
+                      se >> id;
+                      if (version == 2)
+                        {
+                          int n_tags = 0;
+                          se >> type >> n_tags;
+                          if (se.fail() || n_tags < 0)
+                            fail("expected 'id type number-of-tags ...'");
+                          check_type(type);
+                          for (int t = 0; t < n_tags; ++t)
+                            se >> id;
+                        }
+                      const auto nodes_of = nodes_per_element.find(type);
+                      for (unsigned int v = 0; v < nodes_of->second; ++v)
+                        {
+                          long long node = 0;
+                          se >> node;
+                          if (se.fail())
+                            fail("expected " +
+                                 std::to_string(nodes_of->second) +
+                                 " node tags of the element");
+                          if (node_ids.count(node) == 0)
+                            fail("the element refers to node " +
+                                 std::to_string(node) +
+                                 ", which $Nodes does not define");
+                        }
+                      if (type == (dim == 2 ? 3 : 5))
+                        ++n_cells;
+                    }
+                }
+              if (next("$EndElements").str() != "$EndElements")
+                fail("expected $EndElements");
+              elements = true;
+            }
+        }
+      AssertThrow(version != 0,
+                  ExcMessage(file + " has no $MeshFormat section: it is no "
+                                    "Gmsh .msh file."));
+      AssertThrow(nodes && elements,
+                  ExcMessage(file + " has no " +
+                             (nodes ? "$Elements" : "$Nodes") +
+                             " section: the file is truncated."));
+      AssertThrow(n_cells > 0,
+                  ExcMessage(file + " has no " +
+                             (dim == 2 ? "quadrilaterals" : "hexahedra") +
+                             ": is it a mesh for the other dimension (set "
+                             "Dimension)?"));
+      return n_cells;
+    }
+
+
 
     std::string
     to_list(const std::set<unsigned int> &tags)
@@ -162,6 +421,8 @@ namespace dyncontact
         !this->input_directory.empty())
       mesh_file =
         (std::filesystem::path(this->input_directory) / mesh_file).string();
+    n_cells       = check_msh_file(mesh_file, dim);
+    mesh_checksum = Checkpoints::checksum_of_file(mesh_file);
     AssertThrow(!body_tags[0].empty(),
                 ExcMessage(
                   "Scene/Gmsh/Body 1 tags must name at least one tag."));
@@ -183,10 +444,7 @@ namespace dyncontact
   GmshScene<dim>::create_coarse_mesh(Triangulation<dim, dim> &tria) const
   {
     std::ifstream in(mesh_file);
-    AssertThrow(in.good(),
-                ExcMessage("Scene/Gmsh/Mesh file '" + mesh_file +
-                           "' cannot be opened."));
-    GridIn<dim> grid_in;
+    GridIn<dim>   grid_in;
     grid_in.attach_triangulation(tria);
     grid_in.read_msh(in);
 
@@ -231,12 +489,30 @@ namespace dyncontact
                                "' has no cells with physical tag " +
                                std::to_string(tag) + "."));
 
-    // boundaries: every tag named in the prm must exist
+    // boundaries: every tag named in the prm must exist, and a contact tag
+    // of a body must lie on that body
     std::set<unsigned int> face_tags;
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary())
-          face_tags.insert(cell->face(f)->boundary_id());
+          {
+            const unsigned int tag = cell->face(f)->boundary_id();
+            face_tags.insert(tag);
+            for (unsigned int b = 0; b < 2; ++b)
+              AssertThrow(std::find(contact_tags[b].begin(),
+                                    contact_tags[b].end(),
+                                    tag) == contact_tags[b].end() ||
+                            cell->material_id() == b,
+                          ExcMessage(
+                            "Scene/Gmsh/Contact tags of body " +
+                            std::to_string(b + 1) +
+                            ": the boundary faces "
+                            "with physical tag " +
+                            std::to_string(tag) + " in the mesh file '" +
+                            mesh_file + "' belong to body " +
+                            std::to_string(cell->material_id() + 1) +
+                            ", not to body " + std::to_string(b + 1) + "."));
+          }
     auto require = [&](const std::string &entry, const auto &tags) {
       for (const auto tag : tags)
         AssertThrow(face_tags.count(tag),

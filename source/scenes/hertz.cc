@@ -4,6 +4,8 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
+#include <dyncontact/core/input_checks.h>
+#include <dyncontact/core/memory_check.h>
 #include <dyncontact/scenes/hertz.h>
 
 #include <cmath>
@@ -97,8 +99,9 @@ namespace dyncontact
     prm.leave_subsection();
     const std::string where = "Scene/" + subsection + "/";
 
-    AssertThrow(std::isfinite(radius) && radius > 0.,
-                ExcMessage(where + "Radius must be a finite number > 0 (m)."));
+    check_in_range(radius, 1e-9, 1e9, where + "Radius", "m");
+    check_in_range(block_width, 0., 1e3 * radius, where + "Block width", "m");
+    check_in_range(block_depth, 0., 1e3 * radius, where + "Block depth", "m");
     AssertThrow(std::isfinite(block_width) && block_width > radius,
                 ExcMessage(where + "Block width must be a finite number > " +
                            where + "Radius (m)."));
@@ -107,6 +110,7 @@ namespace dyncontact
                            "Block depth must be a finite number > 0 (m)."));
     AssertThrow(std::isfinite(load) && load >= 0.,
                 ExcMessage(where + "Load must be a finite number >= 0."));
+    check_in_range(load, 0., 1e30, where + "Load", dim == 2 ? "N/m" : "N");
     AssertThrow(std::isfinite(drop_velocity) && drop_velocity >= 0.,
                 ExcMessage(
                   where + "Drop velocity must be a finite number >= 0 (m/s)."));
@@ -141,6 +145,20 @@ namespace dyncontact
     if (dim == 2)
       return std::sqrt(4. * load * radius / (M_PI * E));
     return std::cbrt(3. * load * radius / (4. * E));
+  }
+
+
+
+  template <int dim>
+  double
+  HertzScene<dim>::n_coarse_cells() const
+  {
+    double block = 1.;
+    for (unsigned int d = 0; d < dim; ++d)
+      block *= std::max(1.,
+                        std::round(2. * (d == 1 ? block_depth : block_width) /
+                                   radius));
+    return (dim == 2 ? 3. : 4.) + block;
   }
 
 
@@ -220,10 +238,26 @@ namespace dyncontact
     const double zone = 2.5 * hertz_contact_size() + initial_gap;
     for (unsigned int k = 0; k < contact_refinements; ++k)
       {
+        double flagged = 0.;
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned() &&
               cell->center().norm() < zone + 0.5 * cell->diameter())
-            cell->set_refine_flag();
+            {
+              cell->set_refine_flag();
+              ++flagged;
+            }
+        const MPI_Comm comm = tria.get_communicator();
+        check_mesh_fits_in_memory(tria.n_global_active_cells() +
+                                    ((1 << dim) - 1) *
+                                      Utilities::MPI::sum(flagged, comm),
+                                  dim,
+                                  this->polynomial_degree,
+                                  n_coarse_cells(),
+                                  "Scene/" + subsection +
+                                    "/Contact zone refinements (now " +
+                                    std::to_string(contact_refinements) +
+                                    ") or Mesh/Initial global refinements",
+                                  comm);
         tria.execute_coarsening_and_refinement();
       }
   }

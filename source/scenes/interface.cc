@@ -5,6 +5,7 @@
 #include <dyncontact/scenes/interface.h>
 
 #include <algorithm>
+#include <cctype>
 
 namespace dyncontact
 {
@@ -59,6 +60,18 @@ namespace dyncontact
 
 
 
+  template <int dim>
+  std::string
+  Scene<dim>::subsection() const
+  {
+    std::string name = scene_name;
+    if (!name.empty())
+      name[0] = std::toupper(name[0]);
+    return "Scene/" + name;
+  }
+
+
+
   void
   declare_scene_parameters(ParameterHandler &prm)
   {
@@ -95,6 +108,7 @@ namespace dyncontact
     std::unique_ptr<Scene<dim>> scene = info->template create<dim>();
     scene->scene_name                 = name;
     scene->input_directory            = input_directory;
+    scene->polynomial_degree          = prm.get_integer("Polynomial degree");
     scene->parse_parameters(prm);
     for (const std::string &subsection : scene->material_subsections())
       {

@@ -2,6 +2,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
+#include <dyncontact/core/input_checks.h>
 #include <dyncontact/scenes/bar_impact.h>
 #include <dyncontact/scenes/two_bars.h>
 
@@ -86,20 +87,29 @@ namespace dyncontact
     if (cells_across[1] == 0)
       cells_across[1] = cells_across[0];
 
-    AssertThrow(std::isfinite(length) && length > 0.,
-                ExcMessage(
-                  "Scene/Two bars/Length must be a finite number > 0 (m)."));
-    AssertThrow(std::isfinite(height) && height > 0.,
-                ExcMessage(
-                  "Scene/Two bars/Height must be a finite number > 0 (m)."));
-    AssertThrow(
-      std::isfinite(impact_velocity) && impact_velocity >= 0.,
-      ExcMessage(
-        "Scene/Two bars/Impact velocity must be a finite number >= 0 (m/s)."));
-    AssertThrow(
-      std::isfinite(initial_gap) && initial_gap >= 0.,
-      ExcMessage(
-        "Scene/Two bars/Initial gap must be a finite number >= 0 (m)."));
+    check_in_range(length, 1e-9, 1e9, "Scene/Two bars/Length", "m");
+    check_in_range(height, 1e-9, 1e9, "Scene/Two bars/Height", "m");
+    check_in_range(
+      impact_velocity, 0., 1e9, "Scene/Two bars/Impact velocity", "m/s");
+    check_in_range(initial_gap, 0., 1e9, "Scene/Two bars/Initial gap", "m");
+    for (unsigned int b = 0; b < 2; ++b)
+      AssertThrow(length / cells_along[b] <= 1e3 * height &&
+                    height / cells_across[b] <= 1e3 * length / cells_along[b],
+                  ExcMessage("Scene/Two bars: the cells of bar " +
+                             std::to_string(b + 1) +
+                             " would be degenerate (sides in a ratio beyond "
+                             "1000): adjust Length, Height and the cell "
+                             "counts."));
+  }
+
+
+
+  template <int dim>
+  double
+  TwoBars<dim>::n_coarse_cells() const
+  {
+    return double(cells_along[0]) * std::pow(double(cells_across[0]), dim - 1) +
+           double(cells_along[1]) * std::pow(double(cells_across[1]), dim - 1);
   }
 
 

@@ -57,6 +57,18 @@ namespace dyncontact
     Tensor<1, dim> master_normal;   ///< outward normal of the master face
   };
 
+  /// The sides of a face as pairs of its vertices, numbered as in
+  /// closest_point_on_face: 2D vertex 0, 1; 3D xi=0 (v0,v2), xi=1 (v1,v3),
+  /// eta=0 (v0,v1), eta=1 (v2,v3).
+  template <int dim>
+  inline std::vector<std::array<unsigned int, 2>>
+  face_sides()
+  {
+    if (dim == 2)
+      return {{{0, 0}}, {{1, 1}}};
+    return {{{0, 2}}, {{1, 3}}, {{0, 1}}, {{2, 3}}};
+  }
+
   /// Closest point of @p x on one bilinear face (segment in 2D): returns the
   /// reference point and, in @p clamped_sides, which sides of the unit cell
   /// the point is clamped to (2D: vertex 0, 1; 3D: xi=0, xi=1, eta=0, eta=1).

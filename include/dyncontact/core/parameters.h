@@ -46,6 +46,18 @@ namespace dyncontact
   void
   check_for_misplaced_entries(const std::string &text,
                               const std::string &source);
+
+  /**
+   * The prm text @p text (read from @p source) with a leading UTF-8 byte
+   * order mark removed and every line "include <file>" replaced by the
+   * text of that file (recursively; a relative name refers to the folder of
+   * the including file, else to the working directory, as deal.II's
+   * ParameterHandler reads it). A file that includes itself, directly or
+   * through others, a missing include file, or more than 32 nested levels
+   * stop with a message naming the files and lines.
+   */
+  std::string
+  expand_includes(const std::string &text, const std::string &source);
 } // namespace dyncontact
 
 #endif

@@ -26,6 +26,7 @@ namespace dyncontact
   }
   template <int dim>
   class VtuWriter;
+  class OutputDirectory;
 
   /**
    * The time loop, and nothing else: it builds the scene's mesh, asks the
@@ -71,9 +72,14 @@ namespace dyncontact
     setup_discretization();
     void
     make_integrator();
-    /// The initial state, its statistics row and output (a new run).
+    /// The initial state and its statistics row (a new run).
     void
     start();
+    /// Starts statistics.tsv and writes the initial state's VTU: only once
+    /// the first time step has succeeded, so that a run that fails before
+    /// leaves an earlier run's files in the output directory untouched.
+    void
+    open_outputs();
     /// Everything from the last good checkpoint (a resumed run).
     void
     resume();
@@ -106,14 +112,16 @@ namespace dyncontact
     std::unique_ptr<TimeIntegrator>           integrator;
 
     VectorType u, udot, u_old, udot_old;
-    StepReport report;
+    StepReport report, initial_report;
     double     step_wall_time = 0.;
+    bool       outputs_open   = false;
 
     std::unique_ptr<MeshAdaptor<dim>>          mesh_adaptor;
     std::unique_ptr<Postprocess::Manager<dim>> postprocessors;
     std::unique_ptr<VtuWriter<dim>>            vtu_writer;
     std::unique_ptr<ReferenceStates<dim>>      reference_states;
     Checkpoints                                checkpoints;
+    std::unique_ptr<OutputDirectory>           output_directory;
 
     friend class SimulatorAccess<dim>;
   };

@@ -21,7 +21,11 @@ namespace dyncontact
    * by the simulator into mesh_file(); and state.txt with every component's
    * state as key/value pairs) and only then marked as the last good one by
    * an atomic rename of checkpoints/last, so a crash while writing leaves
-   * the previous checkpoint usable; the one before it is kept too. A resumed
+   * the previous checkpoint usable; the one before it is kept too. state.txt
+   * lists the size and CRC-32 of every other file of the checkpoint and ends
+   * with its own checksum; a resumed run verifies them all before it reads
+   * anything, so a truncated, damaged or missing file is reported by name
+   * instead of being loaded. A resumed
    * run must agree with the checkpoint in its critical parameters (all but
    * End time, Output directory, Output, Checkpointing, Time step adaptation
    * and the solver's iteration limits).
@@ -69,7 +73,21 @@ namespace dyncontact
     std::map<std::string, std::string>
     read_state(const std::string &directory) const;
 
+    /// Adds a critical parameter that is no prm entry (e.g. the checksum of
+    /// an input file), which a resumed run must share with its checkpoint.
+    void
+    add_critical_parameter(const std::string &name, const std::string &value);
+
+    /// The CRC-32 of the file @p name, as a hexadecimal string.
+    static std::string
+    checksum_of_file(const std::string &name);
+
   private:
+    /// Checks the files of checkpoint @p directory against the sizes and
+    /// checksums in its state.txt: "" if all is well, else what is wrong.
+    static std::string
+    verify(const std::string &directory);
+
     std::string root;
     MPI_Comm    comm       = MPI_COMM_SELF;
     bool        resume_run = false;

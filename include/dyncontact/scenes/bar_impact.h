@@ -42,6 +42,9 @@ namespace dyncontact
     void
     parse_parameters(ParameterHandler &prm) override;
 
+    double
+    n_coarse_cells() const override;
+
     void
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
 

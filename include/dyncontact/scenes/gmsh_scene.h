@@ -25,6 +25,18 @@ namespace dyncontact
     void
     parse_parameters(ParameterHandler &prm) override;
 
+    double
+    n_coarse_cells() const override
+    {
+      return n_cells;
+    }
+
+    std::string
+    input_checksum() const override
+    {
+      return mesh_checksum;
+    }
+
     void
     create_coarse_mesh(Triangulation<dim, dim> &triangulation) const override;
 
@@ -52,6 +64,8 @@ namespace dyncontact
 
   private:
     std::string                                    mesh_file;
+    double                                         n_cells = 0.;
+    std::string                                    mesh_checksum;
     std::array<std::set<unsigned int>, 2>          body_tags;
     std::set<unsigned int>                         dirichlet_tags;
     std::set<unsigned int>                         neumann_tags;

@@ -125,6 +125,24 @@ namespace dyncontact
     refine_initial_mesh(Triangulation<dim, dim> &) const
     {}
 
+    /// How many coarse cells create_coarse_mesh() will make (before any
+    /// refinement), known from the parameters before the mesh is built, so
+    /// that a mesh too large for the machine is refused before it is
+    /// allocated; 0 if unknown.
+    virtual double
+    n_coarse_cells() const
+    {
+      return 0.;
+    }
+
+    /// A checksum of the input files the scene reads (e.g. a mesh file),
+    /// kept in checkpoints: a resumed run refuses files changed since.
+    virtual std::string
+    input_checksum() const
+    {
+      return "";
+    }
+
     /// Number of bodies (cells have material id 0 .. n_bodies()-1).
     virtual unsigned int
     n_bodies() const
@@ -239,9 +257,16 @@ namespace dyncontact
     bool
     is_viscous() const;
 
+    /// The scene's subsection, "Scene/<Name capitalised>".
+    std::string
+    subsection() const;
+
   protected:
     /// The folder of the prm file: relative file names refer to it.
     std::string input_directory;
+
+    /// The degree of the finite elements (for memory estimates).
+    unsigned int polynomial_degree = 1;
 
   private:
     std::string           scene_name;

@@ -1,0 +1,39 @@
+#ifndef dyncontact_core_memory_check_h
+#define dyncontact_core_memory_check_h
+
+#include <deal.II/base/mpi.h>
+
+#include <string>
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  /**
+   * The memory available to this run in bytes: each node's MemAvailable
+   * (from /proc/meminfo) shared among the ranks on that node, summed over
+   * all ranks of @p comm (collective). Infinite where it cannot be read.
+   */
+  double
+  available_memory(const MPI_Comm comm);
+
+  /**
+   * Stops with a message before a mesh is built that would not fit into
+   * memory: @p n_cells active cells (summed over ranks) of dimension @p dim
+   * with elements of degree @p degree, of which @p n_coarse_cells are coarse
+   * cells (every rank stores the whole coarse mesh). The estimate uses
+   * about 4 kB per degree of freedom (matrices, vectors, contact rows and
+   * mesh, as measured in 3D) and 2 kB per coarse cell and rank; the message
+   * names the estimate, the available memory and @p remedy (the parameters
+   * to reduce). Collective.
+   */
+  void
+  check_mesh_fits_in_memory(const double       n_cells,
+                            const int          dim,
+                            const unsigned int degree,
+                            const double       n_coarse_cells,
+                            const std::string &remedy,
+                            const MPI_Comm     comm);
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,554 @@
+// Hostile input, by class of failure (issue "Trust"): include cycles, Gmsh
+// meshes the program cannot use, damaged checkpoints, meshes too large for
+// the machine, data outside physical ranges, incompatible options, a locked
+// output directory. Every case runs the dyncontact executable with the
+// output directory of an earlier, successful run and must
+//  - exit with a non-zero status,
+//  - print "dyncontact: error:" with a message that names the parameter or
+//    file (a fragment of it is checked), and no backtrace,
+//  - leave the earlier run's statistics.tsv as it was, and no lock file.
+// The messages themselves are not printed (some hold machine-dependent
+// figures such as the memory available). Then a few inputs that must run:
+// a byte-order mark, a stale lock of a killed run, and a viscosity so large
+// that the linear solver's tolerance breaks the energy balance, which the
+// monitor must report.
+
+#include <filesystem>
+#include <map>
+
+#include "tests.h"
+
+namespace
+{
+  namespace fs = std::filesystem;
+  using testing::Outcome;
+  using testing::run_program;
+
+  const std::string base = "set Dimension = 2\n"
+                           "set Output directory = previous\n"
+                           "subsection Time integration\n"
+                           "  set End time = 0.05\n"
+                           "end\n"
+                           "subsection Output\n"
+                           "  set Write vtu = false\n"
+                           "end\n";
+
+  std::string
+  read(const std::string &file)
+  {
+    std::ifstream     in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+  std::string
+  bar(const std::string &entries)
+  {
+    return testing::scene_entries("Bar impact", entries);
+  }
+
+  /// The Gmsh scene on mesh @p mesh (the two blocks' tags).
+  std::string
+  gmsh(const std::string &mesh, const std::string &more = "")
+  {
+    return testing::scene_prm("gmsh",
+                              "    set Mesh file = " + mesh +
+                                "\n"
+                                "    set Body 1 tags = 1\n"
+                                "    set Body 2 tags = 2\n"
+                                "    set Dirichlet tags = 10\n"
+                                "    set Contact tags of body 1 = 11\n"
+                                "    set Contact tags of body 2 = 12\n" +
+                                more) +
+           "subsection Contact\n  set Search radius = 0.2\nend\n";
+  }
+
+  /// The two blocks' mesh with line @p line (1-based) replaced by @p text.
+  void
+  edit_mesh(const std::string &file,
+            const unsigned int line,
+            const std::string &text)
+  {
+    std::istringstream in(read("two_blocks.msh"));
+    std::ofstream      out(file);
+    unsigned int       n = 0;
+    for (std::string l; std::getline(in, l);)
+      out << (++n == line ? text : l) << "\n";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  // a clean start (the folder may hold a previous run of this test)
+  for (const std::string leftover : {"previous",
+                                     "ck",
+                                     "ck_pristine",
+                                     "gmsh_ck",
+                                     "edited.msh",
+                                     "locked",
+                                     "stale",
+                                     "viscous",
+                                     "viscous_tight"})
+    fs::remove_all(leftover);
+
+  // the earlier run whose files must survive every failing case
+  std::ofstream("previous.prm") << base;
+  log() << "earlier run: exit status zero: "
+        << check(run_program("previous.prm").status == 0) << "\n";
+  const std::string previous = read("previous/statistics.tsv");
+
+  // files for the cases
+  fs::copy_file(std::string(DYNCONTACT_PRM_DIR) + "/meshes/two_blocks.msh",
+                "two_blocks.msh",
+                fs::copy_options::overwrite_existing);
+  std::ofstream("self.prm") << "include self.prm\n";
+  std::ofstream("a.prm") << base << "include b.prm\n";
+  std::ofstream("b.prm") << "include a.prm\n";
+  for (unsigned int k = 0; k < 40; ++k)
+    std::ofstream("deep" + std::to_string(k) + ".prm")
+      << "include deep" << k + 1 << ".prm\n";
+  std::ofstream("deep40.prm") << "\n";
+  fs::create_directories("a_directory.prm");
+  fs::create_directories("a_directory.msh");
+  std::ofstream("empty.msh");
+  std::ofstream("text.msh") << "this is not a mesh\n";
+  edit_mesh("triangle.msh", 725, "113 2 2 1 1 1 9 149");
+  edit_mesh("prism.msh", 725, "113 6 2 1 1 1 9 149 104 2 3");
+  edit_mesh("nan.msh", 10, "5 nan 0.05 0");
+  edit_mesh("inf.msh", 10, "5 inf 0.05 0");
+  edit_mesh("words.msh", 10, "5 one 0.05 0");
+  edit_mesh("missing_node.msh", 725, "113 3 2 1 1 1 9 149 99999");
+  edit_mesh("binary.msh", 2, "2.2 1 8");
+  edit_mesh("format3.msh", 2, "3.0 0 8");
+  edit_mesh("node_count.msh", 5, "99999");
+  edit_mesh("no_end_nodes.msh", 610, "$Elements");
+  {
+    const std::string mesh = read("two_blocks.msh");
+    std::ofstream("truncated.msh")
+      << mesh.substr(0, mesh.rfind('\n', mesh.size() / 2) + 1);
+    std::ofstream("no_elements.msh") << mesh.substr(0, mesh.find("$Elements"));
+  }
+  std::ofstream("tetrahedron.msh")
+    << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
+       "2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n"
+       "1 4 2 1 1 1 2 3 4\n$EndElements\n";
+  // a lock held by a live process (this test)
+  fs::create_directories("locked");
+  std::ofstream("locked/.lock")
+    << "host-of-this-test " << ::getpid() << "\n"; // another host: alive
+  const std::string locked_statistics = "locked/statistics.tsv";
+  std::ofstream(locked_statistics) << "step\ttime\n0\t0\n";
+
+  // a checkpointed run: every case below resumes from a copy of it
+  std::ofstream("checkpointed.prm")
+    << base << "set Output directory = ck\n"
+    << "subsection Checkpointing\n  set Interval in steps = 2\nend\n";
+  log() << "checkpointed run: exit status zero: "
+        << check(run_program("checkpointed.prm").status == 0) << "\n";
+  const std::string ck_step =
+    "ck/checkpoints/" + read("ck/checkpoints/last")
+                          .substr(0, read("ck/checkpoints/last").find('\n'));
+  const std::string resume =
+    base + "set Output directory = ck\n"
+           "subsection Checkpointing\n  set Resume = true\nend\n"
+           "subsection Time integration\n  set End time = 0.1\nend\n";
+  fs::copy("ck", "ck_pristine", fs::copy_options::recursive);
+
+  // a checkpointed Gmsh run, for a mesh edited before the resume
+  fs::copy_file("two_blocks.msh", "edited.msh");
+  const std::string gmsh_ck =
+    base + gmsh("edited.msh") +
+    "set Output directory = gmsh_ck\n"
+    "subsection Time integration\n  set End time = 0.01\n  set Time step = "
+    "0.005\nend\n"
+    "subsection Checkpointing\n  set Interval in steps = 1\nend\n";
+  std::ofstream("gmsh_ck.prm") << gmsh_ck;
+  log() << "checkpointed Gmsh run: exit status zero: "
+        << check(run_program("gmsh_ck.prm").status == 0) << "\n";
+
+  struct Case
+  {
+    std::string klass;
+    std::string name;
+    std::string prm;      // appended to base
+    std::string expected; // a fragment of the message
+    std::string damage = "";
+  };
+  const std::string mesh_line = "set Mesh file = ";
+  std::vector<Case> cases     = {
+        // crashes: include cycles
+    {"include", "includes itself", "include self.prm\n", "includes itself"},
+    {"include",
+         "two files include each other",
+         "include a.prm\n",
+         "includes itself"},
+    {"include",
+         "include of a missing file",
+         "include nowhere.prm\n",
+         "nowhere.prm"},
+    {"include",
+         "include of a directory",
+         "include a_directory.prm\n",
+         "a_directory.prm"},
+    {"include",
+         "41 nested includes",
+         "include deep0.prm\n",
+         "more than 32 nested"},
+    {"include", "include without a name", "include \n", "needs a file name"},
+    // Gmsh meshes
+    {"gmsh", "triangles", gmsh("triangle.msh"), "triangles"},
+    {"gmsh", "prisms", gmsh("prism.msh"), "prisms"},
+    {"gmsh",
+         "tetrahedra (3D)",
+         "set Dimension = 3\n" + gmsh("tetrahedron.msh"),
+         "tetrahedra"},
+    {"gmsh", "a directory", gmsh("a_directory.msh"), "a_directory.msh"},
+    {"gmsh", "an empty file", gmsh("empty.msh"), "empty.msh' is empty"},
+    {"gmsh", "a missing file", gmsh("nowhere.msh"), "nowhere.msh"},
+    {"gmsh", "a text file", gmsh("text.msh"), "no $MeshFormat"},
+    {"gmsh", "truncated in the middle", gmsh("truncated.msh"), "truncated"},
+    {"gmsh", "no $Elements", gmsh("no_elements.msh"), "no $Elements"},
+    {"gmsh",
+         "$EndNodes missing",
+         gmsh("no_end_nodes.msh"),
+         "no_end_nodes.msh', line"},
+    {"gmsh", "wrong node count", gmsh("node_count.msh"), "node_count.msh'"},
+    {"gmsh", "NaN coordinate", gmsh("nan.msh"), "nan.msh', line 10"},
+    {"gmsh", "infinite coordinate", gmsh("inf.msh"), "inf.msh', line 10"},
+    {"gmsh",
+         "a word for a coordinate",
+         gmsh("words.msh"),
+         "words.msh', line 10"},
+    {"gmsh",
+         "element with a missing node",
+         gmsh("missing_node.msh"),
+         "node 99999"},
+    {"gmsh", "binary file", gmsh("binary.msh"), "binary .msh"},
+    {"gmsh", "format 3", gmsh("format3.msh"), "not supported"},
+    {"gmsh",
+         "a 2D mesh in 3D",
+         "set Dimension = 3\n" + gmsh("two_blocks.msh"),
+         "no hexahedra"},
+    {"gmsh",
+         "contact tag of body 2 on body 1",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh",
+                              "    set Contact tags of body 1 = 12\n"
+                                  "    set Contact tags of body 2 = 11\n"),
+         "belong to body"},
+    {"gmsh",
+         "tag that is a word",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Body 2 tags = one\n"),
+         "Scene/Gmsh/Body 2 tags"},
+    {"gmsh",
+         "tag out of range",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Dirichlet tags = 70000\n"),
+         "Scene/Gmsh/Dirichlet tags"},
+    {"gmsh",
+         "velocity that is a word",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh",
+                              "    set Initial velocity of body 2 = 0, "
+                                  "fast\n"),
+         "Scene/Gmsh/Initial velocity of body 2"},
+    // damaged checkpoints
+    {"checkpoint",
+         "truncated data file",
+         resume,
+         "mesh_fixed.data' has",
+         "truncate data"},
+    {"checkpoint",
+         "one byte of the data changed",
+         resume,
+         "mesh_fixed.data' is damaged",
+         "flip data"},
+    {"checkpoint",
+         "mesh file deleted",
+         resume,
+         "'mesh' is missing",
+         "delete mesh"},
+    {"checkpoint",
+         "state.txt deleted",
+         resume,
+         "state.txt is missing",
+         "delete state"},
+    {"checkpoint",
+         "state.txt truncated",
+         resume,
+         "state.txt is truncated",
+         "truncate state"},
+    {"checkpoint",
+         "state.txt edited",
+         resume,
+         "state.txt is damaged",
+         "edit state"},
+    {"checkpoint",
+         "'last' names a missing folder",
+         resume,
+         "state.txt",
+         "bad last"},
+    {"checkpoint",
+         "no checkpoint at all",
+         resume,
+         "no checkpoint",
+         "delete all"},
+    {"checkpoint",
+         "End time before the checkpoint",
+         resume + "subsection Time integration\n  set End time = 0.01\nend\n",
+         "Time integration/End time = 0.01 s is not after"},
+    {"checkpoint",
+         "a parameter changed",
+         resume + "subsection Material\n  set Density = 2\nend\n",
+         "Material/Density"},
+    {"checkpoint",
+         "Gmsh mesh edited before the resume",
+         gmsh_ck + "subsection Checkpointing\n  set Resume = true\nend\n"
+                       "subsection Time integration\n  set End time = 0.02\nend\n",
+         "checksum of the input files",
+         "edit gmsh mesh"},
+    // meshes too large for the machine
+    {"memory",
+         "12 global refinements",
+         "subsection Mesh\n  set Initial global refinements = 12\nend\n",
+         "Mesh/Initial global refinements (now 12)"},
+    {"memory",
+         "ten million cells along the bar",
+         bar("    set Cells along length = 10000000\n"),
+         "Scene/Bar impact"},
+    {"memory",
+         "two bars, 12 refinements",
+         scene_prm("two bars") +
+           "subsection Mesh\n  set Initial global refinements = 12\nend\n",
+         "Scene/Two bars"},
+    {"memory",
+         "3D bar, 9 refinements",
+         "set Dimension = 3\nsubsection Mesh\n  set Initial global refinements = "
+             "9\nend\n",
+         "Mesh/Initial global refinements (now 9)"},
+    {"memory",
+         "hertz block 1000 radii wide",
+         scene_prm("hertz", "    set Block width = 1000\n") +
+           "subsection Mesh\n  set Initial global refinements = 8\nend\n",
+         "Scene/Hertz"},
+    {"memory",
+         "Gmsh mesh, 12 refinements",
+         gmsh("two_blocks.msh") +
+           "subsection Mesh\n  set Initial global refinements = 12\nend\n",
+         "Scene/Gmsh"},
+    // data far outside physical ranges
+    {"range",
+         "Height 1e-300",
+         bar("    set Height = 1e-300\n"),
+         "Scene/Bar impact/Height"},
+    {"range",
+         "Height 1e-5 with 40 cells (degenerate cells)",
+         bar("    set Height = 1e-5\n"),
+         "Scene/Bar impact/Height"},
+    {"range",
+         "Length 1e30",
+         bar("    set Length = 1e30\n"),
+         "Scene/Bar impact/Length"},
+    {"range",
+         "Impact velocity 1e300",
+         bar("    set Impact velocity = 1e300\n"),
+         "Scene/Bar impact/Impact velocity"},
+    {"range",
+         "Impact velocity -1",
+         bar("    set Impact velocity = -1\n"),
+         "Scene/Bar impact/Impact velocity"},
+    {"range",
+         "Young's modulus 1e300",
+         "subsection Material\n  set Young's modulus = 1e300\nend\n",
+         "Material/Young's modulus"},
+    {"range",
+         "Young's modulus 1e-300",
+         "subsection Material\n  set Young's modulus = 1e-300\nend\n",
+         "Material/Young's modulus"},
+    {"range",
+         "Density 1e-300",
+         "subsection Material\n  set Density = 1e-300\nend\n",
+         "Material/Density"},
+    {"range",
+         "Density 1e300",
+         "subsection Material\n  set Density = 1e300\nend\n",
+         "Material/Density"},
+    {"range",
+         "Viscous shear modulus 1e30",
+         "subsection Material\n  set Viscous shear modulus = 1e30\nend\n",
+         "Material/Viscous shear modulus"},
+    {"range",
+         "Viscous Lame parameter -1e30",
+         "subsection Material\n  set Viscous Lame parameter = -1e30\nend\n",
+         "Material/Viscous Lame parameter"},
+    {"range",
+         "body 2's density 1e-300",
+         scene_prm("hertz") +
+           "subsection Material of body 2\n  set Density = 1e-300\nend\n",
+         "Material of body 2/Density"},
+    {"range",
+         "two bars: Height 1e-300",
+         scene_prm("two bars", "    set Height = 1e-300\n"),
+         "Scene/Two bars/Height"},
+    {"range",
+         "two bars: Initial gap 1e300",
+         scene_prm("two bars", "    set Initial gap = 1e300\n"),
+         "Scene/Two bars/Initial gap"},
+    {"range",
+         "hertz: Radius 1e-300",
+         scene_prm("hertz", "    set Radius = 1e-300\n"),
+         "Scene/Hertz/Radius"},
+    {"range",
+         "hertz: Load 1e300",
+         scene_prm("hertz", "    set Load = 1e300\n"),
+         "Scene/Hertz/Load"},
+    // incompatible options
+    {"incompatible",
+         "Initial strain with Fixed far end",
+         bar("    set Initial strain = 0.01\n    set Fixed far end = true\n"),
+         "cannot be combined"},
+    // messages naming the parameter
+    {"message",
+         "a word for an integer",
+         bar("    set Cells along length = one\n"),
+         "Cells along length"},
+    {"message",
+         "a word for the dimension",
+         "set Dimension = two\n",
+         "Dimension"},
+    // output directory
+    {"output",
+         "output directory locked by a live run",
+         "set Output directory = locked\n",
+         "in use by another run"},
+  };
+
+  const std::map<std::string, std::function<void()>> damages = {
+    {"truncate data",
+     [&] { fs::resize_file(ck_step + "/mesh_fixed.data", 100); }},
+    {"flip data",
+     [&] {
+       std::fstream f(ck_step + "/mesh_fixed.data",
+                      std::ios::in | std::ios::out | std::ios::binary);
+       f.seekg(200);
+       const char c = f.get();
+       f.seekp(200);
+       f.put(char(c ^ 1));
+     }},
+    {"delete mesh", [&] { fs::remove(ck_step + "/mesh"); }},
+    {"delete state", [&] { fs::remove(ck_step + "/state.txt"); }},
+    {"truncate state",
+     [&] {
+       fs::resize_file(ck_step + "/state.txt",
+                       fs::file_size(ck_step + "/state.txt") / 2);
+     }},
+    {"edit state",
+     [&] {
+       std::string text = read(ck_step + "/state.txt");
+       text[text.find("Time step") + 20] ^= 1;
+       std::ofstream(ck_step + "/state.txt") << text;
+     }},
+    {"bad last", [&] { std::ofstream("ck/checkpoints/last") << "step_9\n"; }},
+    {"delete all", [&] { fs::remove_all("ck/checkpoints"); }},
+    {"edit gmsh mesh", [&] {
+       std::string mesh = read("edited.msh");
+       mesh.replace(mesh.find("\n5 0.7 0.05 0"), 13, "\n5 0.7 0.0502 0");
+       std::ofstream("edited.msh") << mesh;
+     }}};
+
+  std::map<std::string, std::pair<unsigned int, unsigned int>> counts;
+  for (const Case &c : cases)
+    {
+      // a fresh checkpoint for every case that resumes
+      fs::remove_all("ck");
+      fs::copy("ck_pristine", "ck", fs::copy_options::recursive);
+      if (!c.damage.empty())
+        damages.at(c.damage)();
+      const std::string directory =
+        c.prm.find("Output directory = ck") != std::string::npos ? "ck" :
+        c.prm.find("gmsh_ck") != std::string::npos               ? "gmsh_ck" :
+        c.prm.find("= locked") != std::string::npos              ? "locked" :
+                                                                   "previous";
+      const std::string statistics = directory + "/statistics.tsv";
+      const std::string before     = read(statistics);
+
+      std::ofstream("case.prm") << base << c.prm;
+      const Outcome outcome = run_program("case.prm");
+      const auto    at      = outcome.text.find("dyncontact: error:");
+      const bool    named   = at != std::string::npos &&
+                         outcome.text.find(c.expected, at) != std::string::npos;
+      const bool clean =
+        outcome.text.find("Stacktrace") == std::string::npos &&
+        outcome.text.find("An error occurred in") == std::string::npos &&
+        outcome.text.find("Segmentation") == std::string::npos;
+      const bool kept =
+        read(statistics) == before &&
+        (directory == "locked" || !fs::exists(directory + "/.lock"));
+      const bool ok = outcome.status != 0 && named && clean && kept;
+      ++counts[c.klass].first;
+      counts[c.klass].second += ok;
+      log() << c.klass << ": " << c.name
+            << ": exit status non-zero: " << check(outcome.status != 0)
+            << ", message names '" << c.expected << "': " << check(named)
+            << ", no backtrace: " << check(clean)
+            << ", earlier files kept: " << check(kept) << "\n";
+      if (!ok)
+        std::cout << c.name << ":\n" << outcome.text << std::endl;
+    }
+  log() << "\n";
+  for (const auto &[klass, count] : counts)
+    log() << klass << ": " << count.second << " of " << count.first
+          << " cases handled\n";
+  log() << "\n";
+
+  // inputs that must run
+  std::ofstream("bom.prm") << "\xEF\xBB\xBF" << base;
+  log() << "a UTF-8 byte-order mark is ignored: "
+        << check(run_program("bom.prm").status == 0) << "\n";
+
+  fs::create_directories("stale");
+  std::ofstream("stale/.lock") << [] {
+    char name[256] = {};
+    gethostname(name, sizeof(name) - 1);
+    return std::string(name);
+  }() << " 999999999\n";
+  std::ofstream("stale.prm") << base << "set Output directory = stale\n";
+  const Outcome stale = run_program("stale.prm");
+  log() << "a stale lock (no such process) is replaced: "
+        << check(stale.status == 0 &&
+                 stale.text.find("replaced the lock file") !=
+                   std::string::npos &&
+                 !fs::exists("stale/.lock"))
+        << "\n";
+
+  // free flight of a bar with mu_v = 1e12 Pa s and E = 1 Pa: with a loose CG
+  // tolerance, relative to a matrix dominated by tau/2 B, the energy grows
+  std::ofstream("viscous.prm")
+    << base << "set Output directory = viscous\n"
+    << "subsection Material\n  set Viscous shear modulus = 1e12\nend\n"
+    << bar("    set Initial gap = 10\n")
+    << "subsection Contact solver\n  set Linear solver tolerance = 1e-2\nend\n";
+  const Outcome viscous = run_program("viscous.prm");
+  log() << "energy growth from a loose solver tolerance is reported: "
+        << check(viscous.status == 0 &&
+                 viscous.text.find("which Theorem 3.2 excludes") !=
+                   std::string::npos)
+        << "\n";
+  std::ofstream("viscous_tight.prm")
+    << base << "set Output directory = viscous_tight\n"
+    << "subsection Material\n  set Viscous shear modulus = 1e12\nend\n"
+    << bar("    set Initial gap = 10\n")
+    << "subsection Contact solver\n  set Linear solver tolerance = 1e-14\nend\n";
+  const Outcome tight = run_program("viscous_tight.prm");
+  log() << "with a tight tolerance the balance holds (no warning): "
+        << check(tight.status == 0 &&
+                 tight.text.find("which Theorem 3.2 excludes") ==
+                   std::string::npos)
+        << "\n";
+}
