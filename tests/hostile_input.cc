@@ -9,10 +9,15 @@
 //  - leave the earlier run's statistics.tsv as it was, and no lock file.
 // The messages themselves are not printed (some hold machine-dependent
 // figures such as the memory available). Then a few inputs that must run:
-// a byte-order mark, a stale lock of a killed run, and a viscosity so large
-// that the linear solver's tolerance breaks the energy balance, which the
-// monitor must report.
+// a byte-order mark, a stale lock of a killed run, a viscosity so large
+// that the linear solver's tolerance breaks the energy balance (the monitor
+// must report it) or that the step matrix cannot hold the mass (a warning
+// must say so), and a search radius too small for the rows to catch the
+// contact (max_penetration must measure how far the bars pass into each
+// other, and a warning name the radius).
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -40,6 +45,16 @@ namespace
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
+  }
+
+  /// The values of one column of a statistics.tsv file (nan if none).
+  std::vector<double>
+  column_values(const std::string &file, const std::string &name)
+  {
+    const auto statistics = testing::read_statistics(file);
+    if (!statistics.has_column(name) || statistics.rows.empty())
+      return {std::nan("")};
+    return statistics.column(name);
   }
 
   std::string
@@ -549,6 +564,65 @@ main(int argc, char **argv)
   log() << "with a tight tolerance the balance holds (no warning): "
         << check(tight.status == 0 &&
                  tight.text.find("which Theorem 3.2 excludes") ==
+                   std::string::npos)
+        << "\n";
+
+  // at the default tolerance the step matrix itself cannot hold the mass
+  // (tau/2 mu_v outweighs rho h^2 by 4e13): momentum drifts by about 1% per
+  // step, which the program must say
+  std::ofstream("viscous_default.prm")
+    << base << "set Output directory = viscous_default\n"
+    << "subsection Material\n  set Viscous shear modulus = 1e12\nend\n"
+    << bar("    set Initial gap = 10\n");
+  const Outcome drowned = run_program("viscous_default.prm");
+  const auto    momentum =
+    column_values("viscous_default/statistics.tsv", "momentum_x");
+  log() << "momentum drifts (" << testing::fmt(momentum.front(), 2) << " -> "
+        << testing::fmt(momentum.back(), 2)
+        << ") and a warning says that S holds the mass only to about 1e-2: "
+        << check(drowned.status == 0 &&
+                 std::abs(momentum.back() / momentum.front() - 1.) > 1e-3 &&
+                 drowned.text.find("outweigh the mass") != std::string::npos)
+        << "\n";
+  const Outcome plain = run_program("previous.prm");
+  log() << "no such warning for an ordinary bar: "
+        << check(plain.status == 0 &&
+                 plain.text.find("outweigh the mass") == std::string::npos)
+        << "\n";
+
+  // a search radius smaller than the gap: no slave node gets a row and the
+  // bars pass through each other from t = 0.1 s on. max_penetration must
+  // say so: exactly 2 v (t - 0.1 s) = 0.2 m at t = 0.2 s
+  std::ofstream("missed.prm")
+    << base << "set Output directory = missed\n"
+    << "subsection Time integration\n  set End time = 0.2\n"
+    << "  set Time step = 0.0125\nend\n"
+    << testing::scene_prm("two bars")
+    << "subsection Contact\n  set Search radius = 0.01\nend\n";
+  const Outcome missed = run_program("missed.prm");
+  const auto    penetration =
+    column_values("missed/statistics.tsv", "max_penetration");
+  log() << "bars that pass through each other for lack of rows: "
+           "max_penetration at t = 0.2 s is "
+        << testing::fmt(penetration.back(), 4) << " m (exact 0.2), with a "
+        << "warning naming the search radius: "
+        << check(
+             missed.status == 0 && std::abs(penetration.back() - 0.2) < 1e-9 &&
+             missed.text.find("has no constraint row") != std::string::npos &&
+             missed.text.find("Contact/Search radius") != std::string::npos)
+        << "\n";
+  std::ofstream("matched.prm")
+    << base << "set Output directory = matched\n"
+    << "subsection Time integration\n  set End time = 0.2\n"
+    << "  set Time step = 0.0125\nend\n"
+    << testing::scene_prm("two bars");
+  const Outcome matched = run_program("matched.prm");
+  const auto held = column_values("matched/statistics.tsv", "max_penetration");
+  log() << "with the default radius the rows hold the bars apart: "
+        << "max_penetration " << testing::fmt(testing::max_of(held), 1)
+        << " m, no warning: "
+        << check(matched.status == 0 && testing::max_of(held) < 1e-9 &&
+                 matched.text.find("has no constraint row") ==
                    std::string::npos)
         << "\n";
 }

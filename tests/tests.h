@@ -165,6 +165,28 @@ namespace testing
     return {vn_max, n};
   }
 
+  /// A statistics.tsv file as a table.
+  inline Statistics
+  read_statistics(const std::string &file)
+  {
+    Statistics    s;
+    std::ifstream in(file);
+    std::string   line;
+    std::getline(in, line);
+    std::stringstream header(line);
+    for (std::string cell; std::getline(header, cell, '\t');)
+      s.columns.push_back(cell);
+    while (std::getline(in, line))
+      {
+        std::vector<double> row;
+        std::stringstream   cells(line);
+        for (std::string cell; std::getline(cells, cell, '\t');)
+          row.push_back(std::stod(cell));
+        s.rows.push_back(row);
+      }
+    return s;
+  }
+
   /// The last row of a statistics.tsv file, as numbers.
   inline std::vector<double>
   last_row(const std::string &file)

@@ -104,8 +104,10 @@ namespace dyncontact
       "Linear solver tolerance",
       "1e-12",
       Patterns::Double(0.),
-      "Relative tolerance (reduction of the preconditioned residual) of the "
-      "CG solver for each condensed linear system. Dimensionless, in (0, 1).");
+      "Relative tolerance of the CG solver for each condensed linear system: "
+      "it stops when the l2 norm of the residual is below this times the "
+      "larger of the norms of the right-hand side and of the condensed "
+      "right-hand side. Dimensionless, in (0, 1).");
     prm.declare_entry("Maximum linear iterations",
                       "2000",
                       Patterns::Integer(1),

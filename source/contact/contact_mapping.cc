@@ -196,11 +196,41 @@ namespace dyncontact
   std::optional<Image<dim>>
   ContactMapping<dim>::find_image(const Point<dim> &x) const
   {
+    return closest_image(x, radius);
+  }
+
+
+
+  template <int dim>
+  std::optional<Image<dim>>
+  ContactMapping<dim>::find_closest(const Point<dim> &x) const
+  {
+    if (master_faces.empty())
+      return {};
+    // the face of the nearest bounding box bounds the distance from above;
+    // every face at most that far is then a candidate
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+    tree->rtree.query(boost::geometry::index::nearest(x, 1),
+                      std::back_inserter(nearest));
+    std::array<bool, 4> clamped;
+    const auto         &vertices = master_faces[nearest[0].second].vertices;
+    const double        bound    = x.distance(
+      face_point(vertices, closest_point_on_face(vertices, x, clamped)));
+    return closest_image(x, bound * (1. + 1e-12) + 1e-300);
+  }
+
+
+
+  template <int dim>
+  std::optional<Image<dim>>
+  ContactMapping<dim>::closest_image(const Point<dim> &x,
+                                     const double      max_distance) const
+  {
     Point<dim> lower = x, upper = x;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        lower[d] -= radius;
-        upper[d] += radius;
+        lower[d] -= max_distance;
+        upper[d] += max_distance;
       }
     const BoundingBox<dim> box(std::make_pair(lower, upper));
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> candidates;
@@ -217,7 +247,7 @@ namespace dyncontact
           closest_point_on_face(master_faces[f].vertices, x, clamped);
         const Point<dim> p        = face_point(master_faces[f].vertices, xi);
         const double     distance = x.distance(p);
-        if (distance > radius)
+        if (distance > max_distance)
           continue;
         if (best && distance >= best->gap)
           continue;

@@ -101,6 +101,8 @@ namespace dyncontact
   {
     rows.rows.clear();
     row_scalar_dofs.clear();
+    unmatched.clear();
+    master_surfaces.clear();
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
 
     const auto &fe                 = system.get_fe();
@@ -213,8 +215,10 @@ namespace dyncontact
 
     // two-body pairs: the mortar-like mapping phi_h onto the gathered master
     // surface
-    for (const ContactPair &pair : contact_pairs(scene))
+    const auto pairs = contact_pairs(scene);
+    for (unsigned int pair_index = 0; pair_index < pairs.size(); ++pair_index)
       {
+        const ContactPair &pair = pairs[pair_index];
         const std::array<std::vector<MasterFace<dim>>, 2> sides = {
           {gather_faces(system, pair.first_side, scene.symmetry_boundary_ids()),
            gather_faces(system,
@@ -254,7 +258,10 @@ namespace dyncontact
           [&](const Point<dim> &x, const auto &dofs, const auto scalar_dof) {
             const auto image = phi.find_image(x);
             if (!image)
-              return;
+              {
+                unmatched.push_back({x, dofs, pair_index});
+                return;
+              }
             auto       projection = *image;
             const bool inside     = (x - image->point) * image->master_normal <
                                 -1e-10 * pair.search_radius;
@@ -283,7 +290,23 @@ namespace dyncontact
         pcout << "   contact pair: slave is side " << slave + 1 << " ("
               << sides[slave].size() << " faces), master side " << 2 - slave
               << " (" << sides[1 - slave].size() << " faces)" << std::endl;
+        master_surfaces.push_back(sides[1 - slave]);
       }
+
+    // the penetration check of the slave nodes without a row needs the
+    // master surfaces (and their vertex DoFs as ghosts) only if there are
+    // such nodes
+    n_unmatched_nodes =
+      Utilities::MPI::sum<types::global_dof_index>(unmatched.size(), comm);
+    this->locally_owned = locally_owned;
+    master_ghosts       = system.locally_relevant_dofs();
+    if (n_unmatched_nodes == 0)
+      master_surfaces.clear();
+    for (const auto &surface : master_surfaces)
+      for (const auto &face : surface)
+        for (const auto dof : face.vertex_dofs)
+          master_ghosts.add_index(dof);
+    master_ghosts.compress();
 
     // every rank gets all rows, in rank order
     const auto all = Utilities::MPI::all_gather(comm, local_rows);
@@ -302,6 +325,72 @@ namespace dyncontact
     pcout << "   contact rows: " << rows.size()
           << ", measure of the slave contact boundary: " << measure
           << std::endl;
+  }
+
+
+
+  template <int dim>
+  typename ContactSetup<dim>::Penetration
+  ContactSetup<dim>::unmatched_penetration(const VectorType &u) const
+  {
+    Penetration deepest;
+    if (n_unmatched_nodes == 0)
+      return deepest;
+    VectorType ghosted(locally_owned, master_ghosts, comm);
+    ghosted = u;
+    for (unsigned int pair = 0; pair < master_surfaces.size(); ++pair)
+      {
+        bool any = false;
+        for (const auto &node : unmatched)
+          any = any || (node.pair == pair);
+        if (!any)
+          continue;
+        // the deformed master surface
+        std::vector<MasterFace<dim>> deformed = master_surfaces[pair];
+        for (auto &face : deformed)
+          {
+            Tensor<1, dim> mean;
+            for (unsigned int v = 0; v < face.vertices.size(); ++v)
+              {
+                Tensor<1, dim> displacement;
+                for (unsigned int d = 0; d < dim; ++d)
+                  displacement[d] = ghosted(face.vertex_dofs[v * dim + d]);
+                face.vertices[v] += displacement;
+                mean += displacement / double(face.vertices.size());
+              }
+            face.cell_center += mean;
+          }
+        const ContactMapping<dim> phi(deformed, 0.);
+        for (const auto &node : unmatched)
+          if (node.pair == pair)
+            {
+              Point<dim> y = node.x;
+              for (unsigned int d = 0; d < dim; ++d)
+                y[d] += ghosted(node.dofs[d]);
+              const auto image = phi.find_closest(y);
+              if (image && (y - image->point) * image->master_normal < 0. &&
+                  image->gap > deepest.depth)
+                {
+                  deepest.depth    = image->gap;
+                  deepest.position = node.x;
+                }
+            }
+      }
+    // the deepest over all ranks, with its position
+    const auto all = Utilities::MPI::all_gather(
+      comm,
+      std::make_pair(deepest.depth,
+                     std::vector<double>(deepest.position.begin_raw(),
+                                         deepest.position.end_raw())));
+    deepest = Penetration();
+    for (const auto &[depth, position] : all)
+      if (depth > deepest.depth)
+        {
+          deepest.depth = depth;
+          for (unsigned int d = 0; d < dim; ++d)
+            deepest.position[d] = position[d];
+        }
+    return deepest;
   }
 
 
@@ -334,11 +423,15 @@ namespace dyncontact
               master.node_dofs.resize(n_nodes);
               master.node_dof0.assign(n_nodes, numbers::invalid_dof_index);
               face->get_dof_indices(face_dofs);
+              master.vertex_dofs.assign(face->n_vertices() * dim,
+                                        numbers::invalid_dof_index);
               for (unsigned int i = 0; i < face_dofs.size(); ++i)
                 {
                   const auto [c, node] = fe.face_system_to_component_index(i);
                   const auto dof       = face_dofs[i];
-                  auto      &entries   = master.node_dofs[node][c];
+                  if (node < face->n_vertices())
+                    master.vertex_dofs[node * dim + c] = dof;
+                  auto &entries = master.node_dofs[node][c];
                   if (mesh_constraints.is_constrained(dof))
                     {
                       // hanging: its parents; Dirichlet: nothing (fixed)

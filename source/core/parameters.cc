@@ -7,6 +7,7 @@
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/output/checkpoint.h>
+#include <dyncontact/output/progress.h>
 #include <dyncontact/output/reference_states.h>
 #include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/postprocess/interface.h>
@@ -171,6 +172,7 @@ namespace dyncontact
     ContactSetup<dim>::Parameters::declare_parameters(prm);
     MeshAdaptor<dim>::declare_parameters(prm);
     VtuWriter<dim>::declare_parameters(prm);
+    Progress::Parameters::declare_parameters(prm);
     Checkpoints::declare_parameters(prm);
     ReferenceStates<dim>::declare_parameters(prm);
     Postprocess::Manager<dim>::declare_parameters(prm);

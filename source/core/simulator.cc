@@ -7,13 +7,18 @@
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/output/output_directory.h>
+#include <dyncontact/output/progress.h>
 #include <dyncontact/output/reference_states.h>
+#include <dyncontact/output/summary.h>
 #include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -67,7 +72,10 @@ namespace dyncontact
     checkpoints.parse_parameters(prm, parameters.output_directory, comm);
     postprocessors = std::make_unique<Postprocess::Manager<dim>>();
     postprocessors->parse_parameters(prm);
-    scene = create_scene<dim>(prm, input_directory);
+    Progress::Parameters progress_parameters;
+    progress_parameters.parse_parameters(prm);
+    progress = std::make_unique<Progress>(progress_parameters, pcout);
+    scene    = create_scene<dim>(prm, input_directory);
     contact->check(*scene);
     if (!scene->input_checksum().empty())
       checkpoints.add_critical_parameter(scene->subsection() +
@@ -175,6 +183,27 @@ namespace dyncontact
                                        contact->get_rows(),
                                        system->get_constant_modes(),
                                        comm);
+    // in double precision, S = M + tau^2/4 A + tau/2 B keeps the mass only
+    // to about eps * max S_ii/M_ii: momentum and energy drift by that much
+    const double inertia_accuracy =
+      std::numeric_limits<double>::epsilon() * integrator->inertia_ratio();
+    if (inertia_accuracy > 1e-6 && !warned_inertia)
+      {
+        warned_inertia = true;
+        std::ostringstream text;
+        text << std::setprecision(3)
+             << "   warning: in the step matrix S = M + tau^2/4 A + tau/2 B "
+                "the stiffness and viscosity outweigh the mass by a factor "
+             << integrator->inertia_ratio()
+             << " (largest S_ii/M_ii), so in double precision S keeps the "
+                "mass only to a relative accuracy of about "
+             << inertia_accuracy
+             << ": momentum and energy are conserved only to about that "
+                "per step. Reduce 'Time integration/Time step' (the factor "
+                "grows as tau^2 E/(rho h^2) + tau mu_v/(rho h^2))."
+             << std::endl;
+        pcout << text.str();
+      }
   }
 
 
@@ -403,6 +432,9 @@ namespace dyncontact
       resume();
     else
       start();
+    print_banner();
+    progress->start();
+    loop_clock.restart();
 
     while (control.keep_going())
       {
@@ -437,6 +469,17 @@ namespace dyncontact
         record_statistics();
         if (!outputs_open)
           open_outputs();
+        progress->step(control.get_step(),
+                       control.get_time(),
+                       control.get_end_time(),
+                       control.get_timestep(),
+                       std::count(report.active.begin(),
+                                  report.active.end(),
+                                  1),
+                       report.active.size(),
+                       report.displacement_solve.iterations,
+                       report.displacement_solve.linear_iterations +
+                         report.projection_solve.linear_iterations);
         if (vtu_writer->is_enabled() && control.output_due())
           {
             vtu_writer->write(control.get_time());
@@ -453,7 +496,83 @@ namespace dyncontact
       }
     if (!outputs_open)
       open_outputs();
-    timer->print_summary();
+    loop_clock.stop();
+    write_summary();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::print_banner()
+  {
+    // DoFs per body
+    std::vector<types::global_dof_index> body_dofs;
+    for (const auto &components : system->get_body_component_dofs())
+      {
+        types::global_dof_index n = 0;
+        for (const IndexSet &dofs : components)
+          n += dofs.n_elements();
+        body_dofs.push_back(Utilities::MPI::sum(n, comm));
+      }
+    std::ostringstream text;
+    text << std::setprecision(6) << "   bodies: " << body_dofs.size() << " (";
+    for (unsigned int b = 0; b < body_dofs.size(); ++b)
+      text << (b > 0 ? ", " : "") << "body " << b + 1 << ": " << body_dofs[b]
+           << " DoFs";
+    text << ")\n   contact: ";
+    if (!scene->has_contact())
+      text << "none (no rows, no contact search)";
+    else if (scene->obstacle())
+      text << "rigid obstacle (no contact search), "
+           << contact->get_rows().size() << " rows";
+    else
+      text << "two bodies through phi_h, " << contact->get_rows().size()
+           << " rows on the slave side";
+    text << "\n   material: "
+         << (system->has_viscous_matrix() ?
+               "viscoelastic (Kelvin-Voigt, viscous matrix B)" :
+               "elastic (no viscous matrix)")
+         << ", " << (system->matrices().lumped_mass ? "lumped" : "consistent")
+         << " mass\n   time: ";
+    if (scheme.is_static)
+      text << "static problem (one solve)";
+    else
+      text << "scheme " << scheme.name << ", tau = " << control.get_timestep()
+           << " s, "
+           << std::ceil((control.get_end_time() - control.get_time()) /
+                          control.get_timestep() -
+                        1e-9)
+           << " steps from t = " << control.get_time() << " to "
+           << control.get_end_time() << " s";
+    pcout << text.str() << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_summary()
+  {
+    SummaryInput input;
+    input.dim       = dim;
+    input.is_static = scheme.is_static;
+    input.energy_tolerance =
+      std::clamp(1e3 * solver_parameters.linear_tolerance, 1e-9, 1e-4);
+    input.wall_time      = run_clock.wall_time();
+    input.loop_wall_time = loop_clock.wall_time();
+    input.section_wall_times =
+      timer->get_summary_data(TimerOutput::total_wall_time);
+    input.section_calls = timer->get_summary_data(TimerOutput::n_calls);
+    const std::string text =
+      summary_text(postprocessors->get_statistics(), input);
+    const std::string file = parameters.output_directory + "/summary.txt";
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream out(file);
+        out << text;
+      }
+    pcout << "\nSummary (also in " << file << "):\n" << text << std::flush;
   }
 
 

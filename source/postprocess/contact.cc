@@ -1,13 +1,19 @@
 // The contact of the displacement step: active rows and their measure, the
 // contact force 2/tau^2 mu_p (static: mu_p) summed, the largest nodal
-// pressure, and the largest violation of C u <= g after the step.
+// pressure, and the largest violation of the non-penetration condition after
+// the step: of C u <= g over the rows, and, for slave nodes without a row,
+// the depth of their deformed position behind the deformed master surface
+// (ContactSetup::unmatched_penetration), so that a contact the rows miss
+// (a search radius too small) cannot report 0. Such a node gets a warning.
 
 #include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/simulation_control.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
 
 #include <algorithm>
+#include <iomanip>
 
 namespace dyncontact
 {
@@ -55,9 +61,39 @@ namespace dyncontact
                this->get_contact().get_row_operator().constraint_values(
                  this->get_solution()))
             max_penetration = std::max(max_penetration, v);
+        const auto unmatched =
+          this->get_contact().unmatched_penetration(this->get_solution());
+        if (unmatched.depth > 0.)
+          {
+            max_penetration = std::max(max_penetration, unmatched.depth);
+            ++n_warnings;
+            if (n_warnings <= 3)
+              {
+                auto &out = this->get_pcout();
+                out << std::setprecision(3) << "   warning: step "
+                    << this->get_control().get_step()
+                    << " (t = " << this->get_control().get_time()
+                    << " s): the slave node at (";
+                for (unsigned int d = 0; d < dim; ++d)
+                  out << (d > 0 ? ", " : "") << unmatched.position[d];
+                out << ") has no constraint row and lies " << unmatched.depth
+                    << " m inside the other body: it was farther than "
+                       "'Contact/Search radius' from the master surface "
+                       "when the rows were built. Increase the search "
+                       "radius."
+                    << (n_warnings == 3 ? " (Further such warnings are not "
+                                          "printed; see the column "
+                                          "max_penetration.)" :
+                                          "")
+                    << std::endl;
+              }
+          }
         row.insert(row.end(),
                    {n_active, measure, force, max_pressure, max_penetration});
       }
+
+    private:
+      unsigned int n_warnings = 0;
     };
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Contact,

@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <dyncontact/time_stepping/integrators.h>
@@ -52,6 +53,13 @@ namespace dyncontact
         if (system.B != nullptr)
           S.add(tau / 2., *system.B);
         displacement_solver.set_matrix(S, false);
+        // how far the stiffness and viscosity outweigh the mass in S
+        for (const auto i : locally_owned)
+          if (system.M->diag_element(i) > 0.)
+            inertia_ratio =
+              std::max(inertia_ratio,
+                       S.diag_element(i) / system.M->diag_element(i));
+        inertia_ratio = Utilities::MPI::max(inertia_ratio, comm);
       }
     projection_solver.reinit(locally_owned,
                              locally_relevant,

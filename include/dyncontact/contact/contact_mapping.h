@@ -35,13 +35,18 @@ namespace dyncontact
       std::array<std::vector<std::pair<global_dof_index, double>>, dim>>
                                   node_dofs;
     std::vector<global_dof_index> node_dof0;
+    /// The DoFs of each vertex (dim per vertex, as the face numbers them),
+    /// constrained or not: the displacement of the vertex for the deformed
+    /// surface.
+    std::vector<global_dof_index> vertex_dofs;
     std::array<bool, 4> on_symmetry_plane{{false, false, false, false}};
 
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &vertices &cell_center &node_dofs &node_dof0 &on_symmetry_plane;
+      ar &vertices &cell_center &node_dofs &node_dof0 &vertex_dofs
+        &on_symmetry_plane;
     }
   };
 
@@ -96,6 +101,11 @@ namespace dyncontact
     std::optional<Image<dim>>
     find_image(const Point<dim> &x) const;
 
+    /// As find_image(), but at any distance: the closest point of @p x on
+    /// the master surface (none if it lies beside the rim).
+    std::optional<Image<dim>>
+    find_closest(const Point<dim> &x) const;
+
     const std::vector<MasterFace<dim>> &
     faces() const
     {
@@ -103,6 +113,10 @@ namespace dyncontact
     }
 
   private:
+    /// The image among the faces within @p max_distance of @p x.
+    std::optional<Image<dim>>
+    closest_image(const Point<dim> &x, const double max_distance) const;
+
     struct Tree;
     std::vector<MasterFace<dim>> master_faces;
     /// For each face: is its side (see closest_point_on_face) on the rim of

@@ -78,6 +78,32 @@ namespace dyncontact
       return row_scalar_dofs;
     }
 
+    /// The deepest penetration of a slave node without a constraint row.
+    struct Penetration
+    {
+      double     depth = 0.; ///< in m; 0 if none penetrates
+      Point<dim> position;   ///< reference position of that slave node
+    };
+
+    /**
+     * The slave nodes of two-body pairs that got no constraint row (farther
+     * than the search radius from the master surface, or beside it) can
+     * still pass into the other body if the radius was too small: this
+     * finds the deepest such node, by the closest point of its deformed
+     * position x + u(x) on the deformed master surface (at any distance),
+     * inside if it lies behind the master face. Collective; nothing is done
+     * (and no communication happens) when every slave node has a row.
+     */
+    Penetration
+    unmatched_penetration(const VectorType &u) const;
+
+    /// The number of slave nodes without a row, over all ranks.
+    types::global_dof_index
+    n_unmatched() const
+    {
+      return n_unmatched_nodes;
+    }
+
     /// Evaluates C v and C v - g.
     const ContactRowOperator &
     get_row_operator() const
@@ -94,9 +120,24 @@ namespace dyncontact
                  const std::vector<types::boundary_id> &ids,
                  const std::vector<types::boundary_id> &symmetry_ids) const;
 
-    const Parameters                     parameters;
-    const MPI_Comm                       comm;
-    ContactRows                          rows;
+    /// A locally owned slave node without a row.
+    struct UnmatchedNode
+    {
+      Point<dim>                               x;
+      std::array<types::global_dof_index, dim> dofs;
+      unsigned int                             pair;
+    };
+
+    const Parameters           parameters;
+    const MPI_Comm             comm;
+    ContactRows                rows;
+    std::vector<UnmatchedNode> unmatched;
+    types::global_dof_index    n_unmatched_nodes = 0;
+    /// Per pair (kept only if a node has no row): the master surface.
+    std::vector<std::vector<MasterFace<dim>>> master_surfaces;
+    /// The locally relevant DoFs plus the master surfaces' vertex DoFs.
+    IndexSet                             master_ghosts;
+    IndexSet                             locally_owned;
     std::vector<types::global_dof_index> row_scalar_dofs;
     ContactRowOperator                   row_operator;
   };

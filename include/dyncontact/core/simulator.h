@@ -27,6 +27,7 @@ namespace dyncontact
   template <int dim>
   class VtuWriter;
   class OutputDirectory;
+  class Progress;
 
   /**
    * The time loop, and nothing else: it builds the scene's mesh, asks the
@@ -83,6 +84,13 @@ namespace dyncontact
     /// Everything from the last good checkpoint (a resumed run).
     void
     resume();
+    /// What the run uses and leaves out, the DoFs per body, the rows, tau
+    /// and the number of steps.
+    void
+    print_banner();
+    /// The summary, printed and written to summary.txt (rank 0).
+    void
+    write_summary();
     /// One statistics row (and a reference state, if due).
     void
     record_statistics();
@@ -115,6 +123,7 @@ namespace dyncontact
     StepReport report, initial_report;
     double     step_wall_time = 0.;
     bool       outputs_open   = false;
+    bool       warned_inertia = false;
 
     std::unique_ptr<MeshAdaptor<dim>>          mesh_adaptor;
     std::unique_ptr<Postprocess::Manager<dim>> postprocessors;
@@ -122,6 +131,8 @@ namespace dyncontact
     std::unique_ptr<ReferenceStates<dim>>      reference_states;
     Checkpoints                                checkpoints;
     std::unique_ptr<OutputDirectory>           output_directory;
+    std::unique_ptr<Progress>                  progress;
+    Timer                                      run_clock, loop_clock;
 
     friend class SimulatorAccess<dim>;
   };

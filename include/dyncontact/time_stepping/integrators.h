@@ -108,6 +108,10 @@ namespace dyncontact
       return rows->size();
     }
 
+    /// max_i S_ii / M_ii (1 for the static problem): S keeps the mass only
+    /// to a relative accuracy of about this times the machine epsilon.
+    double inertia_ratio = 1.;
+
     /// The warm-start active sets (displacement step, projection).
     std::vector<char> displacement_active;
     std::vector<char> projection_active;
@@ -232,6 +236,13 @@ namespace dyncontact
     time_step() const
     {
       return operators.tau();
+    }
+
+    /// max_i S_ii / M_ii of the step matrix S = M + tau^2/4 A + tau/2 B.
+    double
+    inertia_ratio() const
+    {
+      return operators.inertia_ratio;
     }
 
     /// Factor from a multiplier mu_p to the contact force: 2/tau^2 for the

@@ -1,0 +1,65 @@
+#ifndef dyncontact_output_progress_h
+#define dyncontact_output_progress_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  /**
+   * Signs of life of a long run: a line at most every 'Output/Progress
+   * interval' seconds of wall time with the step, t / T, tau, the active
+   * rows, the active-set and CG iterations of the last step, the wall time
+   * per step and an estimate of the time to the end. A run shorter than
+   * the interval prints none. Only rank 0 prints (through pcout); nothing
+   * here communicates.
+   */
+  class Progress
+  {
+  public:
+    struct Parameters
+    {
+      /// In s of wall time; 0: no progress lines.
+      double interval = 10.;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    Progress(const Parameters &parameters, const ConditionalOStream &pcout);
+
+    /// Starts the clock (after the set-up, before the first step).
+    void
+    start();
+
+    /// After a step: prints a line if the interval has passed.
+    void
+    step(const unsigned int step,
+         const double       time,
+         const double       end_time,
+         const double       tau,
+         const unsigned int active_rows,
+         const unsigned int rows,
+         const unsigned int active_set_iterations,
+         const unsigned int linear_iterations);
+
+  private:
+    const Parameters          parameters;
+    const ConditionalOStream &pcout;
+    Timer                     clock;
+    double                    last_line      = 0.;
+    unsigned int              steps_at_start = 0;
+    bool                      started        = false;
+  };
+} // namespace dyncontact
+
+#endif

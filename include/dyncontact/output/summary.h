@@ -1,0 +1,40 @@
+#ifndef dyncontact_output_summary_h
+#define dyncontact_output_summary_h
+
+#include <dyncontact/core/statistics.h>
+
+#include <map>
+#include <string>
+
+namespace dyncontact
+{
+  /// What the summary needs besides the statistics table.
+  struct SummaryInput
+  {
+    unsigned int dim = 2;
+    /// The energy monitor's tolerance, relative to the energy scale.
+    double energy_tolerance = 1e-9;
+    bool   is_static        = false;
+    /// Wall time of the whole run and of the time loop, in s.
+    double wall_time      = 0.;
+    double loop_wall_time = 0.;
+    /// TimerOutput's sections: wall time (s) and number of calls.
+    std::map<std::string, double> section_wall_times;
+    std::map<std::string, double> section_calls;
+  };
+
+  /**
+   * The summary of a run, from its statistics table alone (so that a test
+   * can check every figure against statistics.tsv): the contact intervals,
+   * the peak contact force and pressure, the energy balance (E + W_visc at
+   * the start and the end, the largest increase between steps and whether
+   * Theorem 3.2 held within the monitor's tolerance), the largest
+   * penetration, the sum of meas Gamma*, the errors against an exact
+   * solution or a reference, the iterations and the timer sections. Lines
+   * of the form "name: value".
+   */
+  std::string
+  summary_text(const Statistics &statistics, const SummaryInput &input);
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,115 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/output/progress.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  void
+  Progress::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Progress interval",
+                      "10",
+                      Patterns::Double(0.),
+                      "Wall time between two progress lines of a long run, "
+                      "in s (each line: step, t / T, tau, active rows, "
+                      "active-set and CG iterations of the last step, wall "
+                      "time per step, estimated time to the end). A run "
+                      "shorter than this prints none; 0: no progress lines.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Progress::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    interval = prm.get_double("Progress interval");
+    prm.leave_subsection();
+  }
+
+
+
+  Progress::Progress(const Parameters         &parameters,
+                     const ConditionalOStream &pcout)
+    : parameters(parameters)
+    , pcout(pcout)
+  {}
+
+
+
+  void
+  Progress::start()
+  {
+    clock.restart();
+    last_line = 0.;
+    started   = false;
+  }
+
+
+
+  namespace
+  {
+    /// A duration in s as "12 s", "3.4 min" or "1.2 h".
+    std::string
+    duration(const double seconds)
+    {
+      std::ostringstream s;
+      s << std::setprecision(2);
+      if (seconds < 90.)
+        s << std::fixed << std::setprecision(seconds < 10. ? 1 : 0) << seconds
+          << " s";
+      else if (seconds < 5400.)
+        s << std::fixed << std::setprecision(1) << seconds / 60. << " min";
+      else
+        s << std::fixed << std::setprecision(1) << seconds / 3600. << " h";
+      return s.str();
+    }
+  } // namespace
+
+
+
+  void
+  Progress::step(const unsigned int step,
+                 const double       time,
+                 const double       end_time,
+                 const double       tau,
+                 const unsigned int active_rows,
+                 const unsigned int rows,
+                 const unsigned int active_set_iterations,
+                 const unsigned int linear_iterations)
+  {
+    if (!started)
+      {
+        steps_at_start = step - 1;
+        started        = true;
+      }
+    if (parameters.interval <= 0. || !pcout.is_active())
+      return;
+    const double wall = clock.wall_time();
+    if (wall - last_line < parameters.interval)
+      return;
+    last_line             = wall;
+    const double per_step = wall / std::max(1u, step - steps_at_start);
+    // the remaining steps at the present tau
+    const double remaining =
+      std::max(0., std::ceil((end_time - time) / tau - 1e-9)) * per_step;
+    std::ostringstream line;
+    line << std::setprecision(4) << "   step " << step << ", t = " << time
+         << " / " << end_time << " s (" << std::fixed << std::setprecision(0)
+         << 100. * time / std::max(end_time, 1e-300) << "%)"
+         << std::defaultfloat << std::setprecision(3) << ", tau = " << tau
+         << " s";
+    if (rows > 0)
+      line << ", active " << active_rows << "/" << rows << ", active-set it. "
+           << active_set_iterations;
+    line << ", CG it. " << linear_iterations << ", " << per_step
+         << " s/step, about " << duration(remaining) << " to go" << std::endl;
+    pcout << line.str();
+  }
+} // namespace dyncontact
