@@ -1,0 +1,104 @@
+// The simulator's reports to the user: the banner (what the run uses and
+// leaves out) and the summary at the end (also in summary.txt).
+
+#include <deal.II/base/mpi.h>
+
+#include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/simulator.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/output/summary.h>
+#include <dyncontact/postprocess/interface.h>
+#include <dyncontact/scenes/interface.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  Simulator<dim>::print_banner()
+  {
+    // DoFs per body
+    std::vector<types::global_dof_index> body_dofs;
+    for (const auto &components : system->get_body_component_dofs())
+      {
+        types::global_dof_index n = 0;
+        for (const IndexSet &dofs : components)
+          n += dofs.n_elements();
+        body_dofs.push_back(Utilities::MPI::sum(n, comm));
+      }
+    std::ostringstream text;
+    text << std::setprecision(6) << "   bodies: " << body_dofs.size() << " (";
+    for (unsigned int b = 0; b < body_dofs.size(); ++b)
+      text << (b > 0 ? ", " : "") << "body " << b + 1 << ": " << body_dofs[b]
+           << " DoFs";
+    text << ")\n   contact: ";
+    if (!scene->has_contact())
+      text << "none (no rows, no contact search)";
+    else if (scene->obstacle())
+      text << "rigid obstacle (no contact search), "
+           << contact->get_rows().size() << " rows";
+    else
+      text << "two bodies through phi_h, " << contact->get_rows().size()
+           << " rows on the slave side";
+    text << "\n   material: "
+         << (system->has_viscous_matrix() ?
+               "viscoelastic (Kelvin-Voigt, viscous matrix B)" :
+               "elastic (no viscous matrix)")
+         << ", " << (system->matrices().lumped_mass ? "lumped" : "consistent")
+         << " mass\n   time: ";
+    if (scheme.is_static)
+      text << "static problem (one solve)";
+    else
+      text << "scheme " << scheme.name << ", tau = " << control.get_timestep()
+           << " s, "
+           << std::ceil((control.get_end_time() - control.get_time()) /
+                          control.get_timestep() -
+                        1e-9)
+           << " steps from t = " << control.get_time() << " to "
+           << control.get_end_time() << " s";
+    pcout << text.str() << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_summary()
+  {
+    SummaryInput input;
+    input.dim       = dim;
+    input.is_static = scheme.is_static;
+    input.energy_tolerance =
+      std::clamp(1e3 * solver_parameters.linear_tolerance, 1e-9, 1e-4);
+    input.wall_time      = run_clock.wall_time();
+    input.loop_wall_time = loop_clock.wall_time();
+    input.section_wall_times =
+      timer->get_summary_data(TimerOutput::total_wall_time);
+    input.section_calls = timer->get_summary_data(TimerOutput::n_calls);
+    const std::string text =
+      summary_text(postprocessors->get_statistics(), input);
+    const std::string file = parameters.output_directory + "/summary.txt";
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream out(file);
+        out << text;
+      }
+    pcout << "\nSummary (also in " << file << "):\n" << text << std::flush;
+  }
+
+
+
+  template void
+  Simulator<2>::print_banner();
+  template void
+  Simulator<3>::print_banner();
+  template void
+  Simulator<2>::write_summary();
+  template void
+  Simulator<3>::write_summary();
+} // namespace dyncontact
