@@ -27,9 +27,13 @@ namespace dyncontact
   {
     locally_owned = owned;
     ghosts        = relevant;
+    std::vector<types::global_dof_index> touched;
     for (const ContactRow &row : rows.rows)
       for (const auto &entry : row.entries)
-        ghosts.add_index(entry.first);
+        touched.push_back(entry.first);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    ghosts.add_indices(touched.begin(), touched.end());
     ghosts.compress();
     contact_rows = &rows;
   }
@@ -218,7 +222,11 @@ namespace dyncontact
         data.elliptic              = true;
         data.higher_order_elements = false;
         data.smoother_sweeps       = 2;
-        data.aggregation_threshold = 0.02;
+        // no dropping: S = M + tau^2/4 A + tau/2 B is dominated by its
+        // diagonal at tau ~ h/c, and with a threshold of 0.02 ML dropped
+        // every coupling and fell back to one level, a direct solve of the
+        // whole matrix (3D bar, 5e4 DoFs: 10 s set-up instead of 0.3 s)
+        data.aggregation_threshold = 0.;
         data.constant_modes        = constant_modes;
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
         amg->initialize(preconditioner_matrix ? *preconditioner_matrix : matrix,

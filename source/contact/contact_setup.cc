@@ -302,10 +302,16 @@ namespace dyncontact
     master_ghosts       = system.locally_relevant_dofs();
     if (n_unmatched_nodes == 0)
       master_surfaces.clear();
+    std::vector<types::global_dof_index> vertex_dofs;
     for (const auto &surface : master_surfaces)
       for (const auto &face : surface)
-        for (const auto dof : face.vertex_dofs)
-          master_ghosts.add_index(dof);
+        vertex_dofs.insert(vertex_dofs.end(),
+                           face.vertex_dofs.begin(),
+                           face.vertex_dofs.end());
+    std::sort(vertex_dofs.begin(), vertex_dofs.end());
+    vertex_dofs.erase(std::unique(vertex_dofs.begin(), vertex_dofs.end()),
+                      vertex_dofs.end());
+    master_ghosts.add_indices(vertex_dofs.begin(), vertex_dofs.end());
     master_ghosts.compress();
 
     // every rank gets all rows, in rank order

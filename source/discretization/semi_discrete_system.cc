@@ -146,11 +146,13 @@ namespace dyncontact
         }
     }
 
-    // locally owned DoFs of each body and component (for the momentum)
-    body_component_dofs.assign(
-      scene.n_bodies(),
-      std::vector<IndexSet>(dim, IndexSet(dof_handler.n_dofs())));
+    // locally owned DoFs of each body and component (for the momentum):
+    // gathered, sorted and added at once (IndexSet::add_index in cell order
+    // is quadratic)
     {
+      std::vector<std::vector<std::vector<types::global_dof_index>>> lists(
+        scene.n_bodies(),
+        std::vector<std::vector<types::global_dof_index>>(dim));
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -158,13 +160,22 @@ namespace dyncontact
             cell->get_dof_indices(dofs);
             for (unsigned int i = 0; i < dofs.size(); ++i)
               if (locally_owned.is_element(dofs[i]))
-                body_component_dofs[cell->material_id()]
-                                   [fe.system_to_component_index(i).first]
-                                     .add_index(dofs[i]);
+                lists[cell->material_id()]
+                     [fe.system_to_component_index(i).first]
+                       .push_back(dofs[i]);
           }
-      for (auto &body : body_component_dofs)
-        for (auto &set : body)
-          set.compress();
+      body_component_dofs.assign(
+        scene.n_bodies(),
+        std::vector<IndexSet>(dim, IndexSet(dof_handler.n_dofs())));
+      for (unsigned int b = 0; b < lists.size(); ++b)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            auto &list = lists[b][c];
+            std::sort(list.begin(), list.end());
+            list.erase(std::unique(list.begin(), list.end()), list.end());
+            body_component_dofs[b][c].add_indices(list.begin(), list.end());
+            body_component_dofs[b][c].compress();
+          }
     }
   }
 

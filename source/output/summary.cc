@@ -9,11 +9,26 @@ namespace dyncontact
 {
   namespace
   {
-    /// The row of the largest value of a column (the first one).
+    /// The row of the largest value of a column (the first one; rows
+    /// without a value, nan, are left out).
     unsigned int
     arg_max(const std::vector<double> &v)
     {
-      return std::max_element(v.begin(), v.end()) - v.begin();
+      unsigned int best = 0;
+      for (unsigned int r = 0; r < v.size(); ++r)
+        if (!std::isnan(v[r]) && (std::isnan(v[best]) || v[r] > v[best]))
+          best = r;
+      return best;
+    }
+
+    /// The row of the last value of a column that is not nan.
+    unsigned int
+    last_value(const std::vector<double> &v)
+    {
+      for (unsigned int r = v.size(); r > 0; --r)
+        if (!std::isnan(v[r - 1]))
+          return r - 1;
+      return v.size() - 1;
     }
   } // namespace
 
@@ -115,7 +130,8 @@ namespace dyncontact
       if (s.has_column(name))
         {
           const auto e = s.column(name);
-          out << name << ": " << e[last] << " at the end, " << e[arg_max(e)]
+          out << name << ": " << e[last_value(e)] << " at t = "
+              << time[last_value(e)] << " s (the last value), " << e[arg_max(e)]
               << " at most (t = " << time[arg_max(e)] << " s)\n";
         }
 

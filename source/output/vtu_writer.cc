@@ -68,7 +68,15 @@ namespace dyncontact
     prm.declare_entry("Write vtu",
                       "true",
                       Patterns::Bool(),
-                      "Whether to write VTU/PVTU files and solution.pvd.");
+                      "Whether to write VTU/PVTU files and solution.pvd. "
+                      "false skips all output work.");
+    prm.declare_entry("Compression",
+                      "fast",
+                      Patterns::Selection("none|fast|best"),
+                      "zlib compression of the VTU files: none (largest "
+                      "files, quickest to write), fast (zlib's fastest "
+                      "level: files about as small, written several times "
+                      "faster than with best) or best (smallest files).");
     prm.leave_subsection();
   }
 
@@ -79,7 +87,11 @@ namespace dyncontact
   VtuWriter<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    write_vtu = prm.get_bool("Write vtu");
+    write_vtu                = prm.get_bool("Write vtu");
+    const std::string choice = prm.get("Compression");
+    compression = choice == "none" ? DataOutBase::VtkFlags::no_compression :
+                  choice == "fast" ? DataOutBase::VtkFlags::best_speed :
+                                     DataOutBase::VtkFlags::best_compression;
     prm.leave_subsection();
   }
 
@@ -185,6 +197,10 @@ namespace dyncontact
         level(cell->active_cell_index()) = cell->level();
     data_out.add_data_vector(level, "refinement_level");
     data_out.build_patches(this->get_mapping(), system.get_fe().degree);
+    DataOutBase::VtkFlags flags;
+    flags.compression_level =
+      static_cast<DataOutBase::VtkFlags::ZlibCompressionLevel>(compression);
+    data_out.set_flags(flags);
 
     const std::string directory = this->get_parameters().output_directory;
     const std::string pvtu      = data_out.write_vtu_with_pvtu_record(

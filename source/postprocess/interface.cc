@@ -42,13 +42,17 @@ namespace dyncontact
       SimulatorAccess<dim>::initialize_simulator(simulator);
       std::vector<std::unique_ptr<Interface<dim>>> applicable;
       statistics.columns = {"step", "time"};
+      sampled_columns    = {false, false};
       for (auto &postprocessor : postprocessors)
         {
           postprocessor->initialize_simulator(simulator);
           if (postprocessor->applies())
             {
               for (const auto &column : postprocessor->columns())
-                statistics.columns.push_back(column);
+                {
+                  statistics.columns.push_back(column);
+                  sampled_columns.push_back(postprocessor->sampled());
+                }
               applicable.push_back(std::move(postprocessor));
             }
         }

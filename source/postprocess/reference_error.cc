@@ -25,6 +25,12 @@ namespace dyncontact
         return {"error_reference"};
       }
 
+      bool
+      sampled() const override
+      {
+        return true;
+      }
+
       void
       execute(std::vector<double> &row) override
       {

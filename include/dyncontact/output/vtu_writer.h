@@ -49,7 +49,9 @@ namespace dyncontact
     load(const std::map<std::string, std::string> &state);
 
   private:
-    bool                                        write_vtu      = true;
+    bool write_vtu = true;
+    /// DataOutBase::VtkFlags::ZlibCompressionLevel
+    int                                         compression    = 0;
     unsigned int                                output_counter = 0;
     std::vector<std::pair<double, std::string>> pvd_records;
   };

@@ -51,6 +51,14 @@ namespace dyncontact
       virtual std::vector<std::string>
       columns() const = 0;
 
+      /// Whether its columns have values only at some steps, nan between
+      /// them (any other statistic that is not finite stops the run).
+      virtual bool
+      sampled() const
+      {
+        return false;
+      }
+
       /// Appends one value per column for the current step to @p row.
       virtual void
       execute(std::vector<double> &row) = 0;
@@ -102,6 +110,14 @@ namespace dyncontact
         return statistics;
       }
 
+      /// Whether column @p c of the statistics has values only at some
+      /// steps (nan between them).
+      bool
+      is_sampled(const unsigned int c) const
+      {
+        return sampled_columns[c];
+      }
+
       /// The rows so far and every postprocessor's accumulators.
       void
       save(std::map<std::string, std::string> &state) const;
@@ -111,6 +127,7 @@ namespace dyncontact
     private:
       std::vector<std::unique_ptr<Interface<dim>>> postprocessors;
       Statistics                                   statistics;
+      std::vector<bool>                            sampled_columns;
       std::ofstream                                file;
     };
   } // namespace Postprocess
