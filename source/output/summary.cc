@@ -130,9 +130,10 @@ namespace dyncontact
       if (s.has_column(name))
         {
           const auto e = s.column(name);
-          out << name << ": " << e[last_value(e)] << " at t = "
-              << time[last_value(e)] << " s (the last value), " << e[arg_max(e)]
-              << " at most (t = " << time[arg_max(e)] << " s)\n";
+          out << name << ": " << e[last_value(e)]
+              << " at t = " << time[last_value(e)] << " s (the last value), "
+              << e[arg_max(e)] << " at most (t = " << time[arg_max(e)]
+              << " s)\n";
         }
 
     auto total = [&](const std::string &name) {
