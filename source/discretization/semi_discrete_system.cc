@@ -469,17 +469,27 @@ namespace dyncontact
 
 
   template <int dim>
-  void
-  SemiDiscreteSystem<dim>::prepare_for_refinement(const VectorType &u,
-                                                  const VectorType &udot)
+  std::vector<const VectorType *>
+  SemiDiscreteSystem<dim>::start_transfer(const VectorType &u,
+                                          const VectorType &udot)
   {
     transferred.assign(2, VectorType(locally_owned, locally_relevant, comm));
     transferred[0] = u;
     transferred[1] = udot;
     transfer       = std::make_unique<
       parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
-    transfer->prepare_for_coarsening_and_refinement(
-      std::vector<const VectorType *>{&transferred[0], &transferred[1]});
+    return {&transferred[0], &transferred[1]};
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::prepare_for_refinement(const VectorType &u,
+                                                  const VectorType &udot)
+  {
+    const auto vectors = start_transfer(u, udot);
+    transfer->prepare_for_coarsening_and_refinement(vectors);
   }
 
 
@@ -506,13 +516,8 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::prepare_for_serialization(const VectorType &u,
                                                      const VectorType &udot)
   {
-    transferred.assign(2, VectorType(locally_owned, locally_relevant, comm));
-    transferred[0] = u;
-    transferred[1] = udot;
-    transfer       = std::make_unique<
-      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
-    transfer->prepare_for_serialization(
-      std::vector<const VectorType *>{&transferred[0], &transferred[1]});
+    const auto vectors = start_transfer(u, udot);
+    transfer->prepare_for_serialization(vectors);
   }
 
 

@@ -248,6 +248,10 @@ namespace dyncontact
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
                             transfer;
     std::vector<VectorType> transferred;
+    /// Copies (u, udot) into ghosted vectors and starts a new transfer
+    /// object on the current DoFs; returns the vectors to hand to it.
+    std::vector<const VectorType *>
+    start_transfer(const VectorType &u, const VectorType &udot);
   };
 } // namespace dyncontact
 
