@@ -501,7 +501,8 @@ main(int argc, char **argv)
       const bool clean =
         outcome.text.find("Stacktrace") == std::string::npos &&
         outcome.text.find("An error occurred in") == std::string::npos &&
-        outcome.text.find("Segmentation") == std::string::npos;
+        outcome.text.find("Segmentation") == std::string::npos &&
+        outcome.text.find("TimerOutput objects finalize") == std::string::npos;
       const bool kept =
         read(statistics) == before &&
         (directory == "locked" || !fs::exists(directory + "/.lock"));

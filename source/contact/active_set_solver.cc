@@ -139,7 +139,7 @@ namespace dyncontact
     AssertThrow(linear_tolerance > 0. && linear_tolerance < 1.,
                 ExcMessage("Contact solver/Linear solver tolerance must lie in "
                            "(0, 1); got " +
-                           std::to_string(linear_tolerance) + "."));
+                           Utilities::to_string(linear_tolerance) + "."));
   }
 
 

@@ -42,10 +42,6 @@ namespace dyncontact
                             const MPI_Comm     comm)
     : comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , timer(std::make_unique<TimerOutput>(comm,
-                                          pcout,
-                                          TimerOutput::never,
-                                          TimerOutput::wall_times))
     , control(comm)
     , scheme(TimeIntegrator::parse_scheme(prm))
     , triangulation(comm)
@@ -508,6 +504,12 @@ namespace dyncontact
   Statistics
   Simulator<dim>::run()
   {
+    // created here, not in the constructor: a TimerOutput destroyed while
+    // an exception unwinds prints an MPI warning over the user's message
+    timer = std::make_unique<TimerOutput>(comm,
+                                          pcout,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times);
     try
       {
         run_time_loop();

@@ -10,7 +10,6 @@
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -71,12 +70,11 @@ namespace dyncontact
   Simulator<dim>::write_summary()
   {
     SummaryInput input;
-    input.dim       = dim;
-    input.is_static = scheme.is_static;
-    input.energy_tolerance =
-      std::clamp(1e3 * solver_parameters.linear_tolerance, 1e-9, 1e-4);
-    input.wall_time      = run_clock.wall_time();
-    input.loop_wall_time = loop_clock.wall_time();
+    input.dim              = dim;
+    input.is_static        = scheme.is_static;
+    input.energy_tolerance = solver_parameters.energy_tolerance();
+    input.wall_time        = run_clock.wall_time();
+    input.loop_wall_time   = loop_clock.wall_time();
     input.section_wall_times =
       timer->get_summary_data(TimerOutput::total_wall_time);
     input.section_calls = timer->get_summary_data(TimerOutput::n_calls);

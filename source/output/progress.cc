@@ -60,7 +60,6 @@ namespace dyncontact
     duration(const double seconds)
     {
       std::ostringstream s;
-      s << std::setprecision(2);
       if (seconds < 90.)
         s << std::fixed << std::setprecision(seconds < 10. ? 1 : 0) << seconds
           << " s";

@@ -43,12 +43,9 @@ namespace dyncontact
       void
       parse_parameters(ParameterHandler &prm) override
       {
-        prm.enter_subsection("Contact solver");
-        tolerance =
-          std::min(1e-4,
-                   std::max(1e-9,
-                            1e3 * prm.get_double("Linear solver tolerance")));
-        prm.leave_subsection();
+        ActiveSetSolver::Parameters solver;
+        solver.parse_parameters(prm);
+        tolerance = solver.energy_tolerance();
       }
 
       void

@@ -10,6 +10,7 @@
 
 #include <dyncontact/contact/contact_rows.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -109,6 +110,15 @@ namespace dyncontact
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      /// The energy monitor's tolerance (relative to the energy scale)
+      /// that this linear tolerance allows: 1e3 times it, within
+      /// [1e-9, 1e-4].
+      double
+      energy_tolerance() const
+      {
+        return std::min(1e-4, std::max(1e-9, 1e3 * linear_tolerance));
+      }
     };
 
     /// How a solve ended. A failure is reported, never thrown: the time
