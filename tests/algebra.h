@@ -74,7 +74,6 @@ namespace algebra
         row.eliminated = c;
     row.gap    = gap;
     row.weight = 1.;
-    row.owner  = 0;
     return row;
   }
 

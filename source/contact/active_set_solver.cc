@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <set>
 #include <sstream>
 
 namespace dyncontact
@@ -46,12 +45,9 @@ namespace dyncontact
     VectorType ghosted(locally_owned, ghosts, comm);
     ghosted = v;
     std::vector<double> values(size(), 0.);
-    const unsigned int  my_rank = Utilities::MPI::this_mpi_process(comm);
     for (unsigned int p = 0; p < values.size(); ++p)
-      if (contact_rows->rows[p].owner == my_rank)
-        for (const auto &entry : contact_rows->rows[p].entries)
-          values[p] += entry.second * ghosted(entry.first);
-    Utilities::MPI::sum(values, comm, values);
+      for (const auto &entry : contact_rows->rows[p].entries)
+        values[p] += entry.second * ghosted(entry.first);
     return values;
   }
 
@@ -185,12 +181,10 @@ namespace dyncontact
     diagonal.compress(VectorOperation::insert);
 
     // the scaling of the active-set criterion for each row: H's diagonal at
-    // the eliminated DoF, known on the owner, summed to all ranks
+    // the eliminated DoF (owned, as the row's slave node)
     row_scaling.assign(rows->size(), 0.);
     for (unsigned int p = 0; p < rows->size(); ++p)
-      if (locally_owned.is_element(rows->rows[p].eliminated_dof()))
-        row_scaling[p] = diagonal(rows->rows[p].eliminated_dof());
-    Utilities::MPI::sum(row_scaling, comm, row_scaling);
+      row_scaling[p] = diagonal(rows->rows[p].eliminated_dof());
 
     // A pointwise projection is possible if H is diagonal, no row has
     // master entries, and the only mesh constraints are Dirichlet lines
@@ -322,15 +316,10 @@ namespace dyncontact
       v(i) = mesh_constraints.is_constrained(i) ? 0. : r(i) / diagonal(i);
     v.compress(VectorOperation::insert);
 
-    const unsigned int  my_rank = Utilities::MPI::this_mpi_process(comm);
-    std::vector<double> mu(rows->size(), 0.);
-    std::vector<double> act(rows->size(), 0.);
     for (unsigned int p = 0; p < rows->size(); ++p)
       {
         const ContactRow &row = rows->rows[p];
-        if (row.owner != my_rank)
-          continue;
-        double cv = 0., cDc = 0.;
+        double            cv = 0., cDc = 0.;
         for (const auto &entry : row.entries)
           {
             cv += entry.second * v(entry.first);
@@ -341,16 +330,13 @@ namespace dyncontact
           {
             for (const auto &entry : row.entries)
               v(entry.first) -= t * entry.second / diagonal(entry.first);
-            mu[p]  = t;
-            act[p] = 1.;
+            multipliers[p] = t;
+            active[p]      = 1;
           }
+        else
+          active[p] = 0;
       }
     v.compress(VectorOperation::insert);
-    Utilities::MPI::sum(mu, comm, mu);
-    multipliers = mu;
-    Utilities::MPI::sum(act, comm, act);
-    for (unsigned int p = 0; p < rows->size(); ++p)
-      active[p] = (act[p] > 0.5);
     Result result;
     result.iterations = 1;
     return result;
@@ -371,11 +357,12 @@ namespace dyncontact
     if (pointwise)
       return solve_pointwise(r, v, active, multipliers);
 
-    Result                      result;
-    std::set<std::vector<char>> visited;
-    AffineConstraints<double>   constraints, homogeneous;
-    VectorType                  x(r), b(r), k(r), residual(r);
-    const double                r_norm = r.l2_norm();
+    Result result;
+    // the local part of every active set visited so far (to detect cycling)
+    std::vector<std::vector<char>> visited;
+    AffineConstraints<double>      constraints, homogeneous;
+    VectorType                     x(r), b(r), k(r), residual(r);
+    const double                   r_norm = r.l2_norm();
 
     for (result.iterations = 1;; ++result.iterations)
       {
@@ -455,27 +442,26 @@ namespace dyncontact
         residual.sadd(-1., 1., r);
         {
           VectorType ghosted(locally_owned, row_operator.ghost_set(), comm);
-          ghosted                    = residual;
-          const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+          ghosted = residual;
           for (unsigned int p = 0; p < rows->size(); ++p)
             {
               const ContactRow &row = rows->rows[p];
               multipliers[p]        = 0.;
-              if (row.owner == my_rank && active[p])
+              if (active[p])
                 for (unsigned int c = 0; c < row.n_components; ++c)
                   multipliers[p] +=
                     row.normal[c] * ghosted(row.entries[c].first);
             }
-          Utilities::MPI::sum(multipliers, comm, multipliers);
         }
 
         // new active set: mu_p + c_p (C v - g)_p > 0
         // (a displacement tolerance delta keeps round-off from flipping rows
         // that sit exactly on the constraint)
         const std::vector<double> violation = row_operator.constraint_values(v);
-        double                    scale     = v.linfty_norm();
+        double                    scale     = 0.;
         for (const ContactRow &row : rows->rows)
           scale = std::max(scale, std::abs(row.gap));
+        scale = std::max(Utilities::MPI::max(scale, comm), v.linfty_norm());
         const double      delta = 1e-11 * scale;
         std::vector<char> new_active(rows->size(), 0);
         for (unsigned int p = 0; p < rows->size(); ++p)
@@ -490,10 +476,13 @@ namespace dyncontact
             std::max(result.residual,
                      std::abs(std::min(multipliers[p] / row_scaling[p],
                                        -violation[p])));
+        result.residual = Utilities::MPI::max(result.residual, comm);
         // converged: the active set is unchanged, or it still changes only
         // on degenerate rows (touching with zero force) while the
         // complementarity conditions hold to the displacement tolerance
-        if (new_active == active || result.residual <= delta)
+        const bool unchanged =
+          Utilities::MPI::min(new_active == active ? 1 : 0, comm) == 1;
+        if (unchanged || result.residual <= delta)
           break;
         if (result.iterations >= parameters.max_iterations)
           {
@@ -502,8 +491,14 @@ namespace dyncontact
           }
         // cycling between active sets ("ping-pong"): damp the iteration by
         // changing only the row that violates its condition the most
-        visited.insert(active);
-        if (visited.count(new_active))
+        // (a set was visited if it matches on every rank: one scalar
+        // reduction per earlier iterate)
+        visited.push_back(active);
+        std::vector<unsigned int> matches(visited.size());
+        for (unsigned int k = 0; k < visited.size(); ++k)
+          matches[k] = (visited[k] == new_active) ? 1 : 0;
+        Utilities::MPI::min(matches, comm, matches);
+        if (std::find(matches.begin(), matches.end(), 1u) != matches.end())
           {
             result.cycled      = true;
             unsigned int worst = 0;
@@ -519,8 +514,17 @@ namespace dyncontact
                       worst = p;
                     }
                 }
-            new_active        = active;
-            new_active[worst] = !active[worst];
+            // the worst row over all ranks (the first rank among equals)
+            const double       largest = Utilities::MPI::max(size, comm);
+            const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+            const unsigned int owner =
+              Utilities::MPI::min(size == largest ?
+                                    my_rank :
+                                    Utilities::MPI::n_mpi_processes(comm),
+                                  comm);
+            new_active = active;
+            if (owner == my_rank)
+              new_active[worst] = !active[worst];
           }
         active = new_active;
       }

@@ -1,5 +1,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/numerics/rtree.h>
 
 #include <boost/serialization/array.hpp>
 #include <boost/serialization/utility.hpp>
@@ -9,10 +10,30 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// The box of half-width @p radius around @p x.
+    template <int dim>
+    BoundingBox<dim>
+    search_box(const Point<dim> &x, const double radius)
+    {
+      Point<dim> lower = x, upper = x;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] -= radius;
+          upper[d] += radius;
+        }
+      return BoundingBox<dim>(std::make_pair(lower, upper));
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   ContactSetup<dim>::Parameters::declare_parameters(ParameterHandler &prm)
@@ -103,7 +124,6 @@ namespace dyncontact
     row_scalar_dofs.clear();
     unmatched.clear();
     master_surfaces.clear();
-    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
 
     const auto &fe                 = system.get_fe();
     const auto &scalar_fe          = system.get_scalar_fe();
@@ -166,7 +186,6 @@ namespace dyncontact
     // with the largest |nu_i|); false for a node without a free component
     // (a hanging node, or a node fixed by Dirichlet data)
     auto finish_row = [&](ContactRow &row) {
-      row.owner  = my_rank;
       row.weight = w_ghosted(row.entries[0].first);
       int best   = -1;
       for (unsigned int d = 0; d < dim; ++d)
@@ -178,7 +197,6 @@ namespace dyncontact
       return best >= 0;
     };
 
-    std::vector<std::pair<ContactRow, types::global_dof_index>> local_rows;
 
     // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
     if (const auto obstacle = scene.obstacle())
@@ -210,20 +228,28 @@ namespace dyncontact
                                  "'Contact solver/Initial penetration = "
                                  "project'."));
           if (finish_row(row))
-            local_rows.emplace_back(row, scalar_dof);
+            {
+              rows.rows.push_back(row);
+              row_scalar_dofs.push_back(scalar_dof);
+            }
         });
 
-    // two-body pairs: the mortar-like mapping phi_h onto the gathered master
-    // surface
+    // two-body pairs: the mortar-like mapping phi_h onto the master faces
+    // near this rank's slave nodes (a parallel search: no rank holds the
+    // whole master surface)
     const auto pairs = contact_pairs(scene);
     for (unsigned int pair_index = 0; pair_index < pairs.size(); ++pair_index)
       {
         const ContactPair &pair = pairs[pair_index];
         const std::array<std::vector<MasterFace<dim>>, 2> sides = {
-          {gather_faces(system, pair.first_side, scene.symmetry_boundary_ids()),
-           gather_faces(system,
-                        pair.second_side,
-                        scene.symmetry_boundary_ids())}};
+          {local_faces(system, pair.first_side, scene.symmetry_boundary_ids()),
+           local_faces(system,
+                       pair.second_side,
+                       scene.symmetry_boundary_ids())}};
+        std::array<types::global_dof_index, 2> n_faces = {
+          {Utilities::MPI::sum<types::global_dof_index>(sides[0].size(), comm),
+           Utilities::MPI::sum<types::global_dof_index>(sides[1].size(),
+                                                        comm)}};
         int slave = pair.slave_side;
         if (slave < 0)
           {
@@ -233,34 +259,57 @@ namespace dyncontact
             std::array<double, 2> size{{0., 0.}};
             for (unsigned int s = 0; s < 2; ++s)
               {
-                const ContactMapping<dim> other(sides[1 - s],
-                                                pair.search_radius);
-                unsigned int              n = 0;
+                std::vector<Point<dim>> centres;
                 for (const auto &face : sides[s])
                   {
                     Point<dim> centre;
                     for (const auto &v : face.vertices)
                       centre += v / double(face.vertices.size());
-                    if (other.find_image(centre))
-                      {
-                        size[s] +=
-                          face.vertices[0].distance(face.vertices.back());
-                        ++n;
-                      }
+                    centres.push_back(centre);
                   }
+                const ContactMapping<dim> other(faces_near(sides[1 - s],
+                                                           centres,
+                                                           pair.search_radius),
+                                                pair.search_radius);
+                double                    n = 0.;
+                for (unsigned int f = 0; f < centres.size(); ++f)
+                  if (other.find_image(centres[f]))
+                    {
+                      size[s] += sides[s][f].vertices[0].distance(
+                        sides[s][f].vertices.back());
+                      n += 1.;
+                    }
+                size[s] = Utilities::MPI::sum(size[s], comm);
+                n       = Utilities::MPI::sum(n, comm);
                 size[s] = (n > 0) ? size[s] / n : 1e300;
               }
-            slave = (size[1] < size[0]) ? 1 : 0;
+            slave = (size[1] < size[0] * (1. - 1e-12)) ? 1 : 0;
           }
-        const ContactMapping<dim> phi(sides[1 - slave], pair.search_radius);
-        for_each_boundary_node(
-          slave == 0 ? pair.first_side : pair.second_side,
-          [&](const Point<dim> &x, const auto &dofs, const auto scalar_dof) {
-            const auto image = phi.find_image(x);
+
+        // this rank's slave nodes, then the master faces near them
+        std::vector<Point<dim>>                               slave_points;
+        std::vector<std::array<types::global_dof_index, dim>> slave_dofs;
+        std::vector<types::global_dof_index>                  slave_scalar;
+        for_each_boundary_node(slave == 0 ? pair.first_side : pair.second_side,
+                               [&](const Point<dim> &x,
+                                   const auto       &dofs,
+                                   const auto        scalar_dof) {
+                                 slave_points.push_back(x);
+                                 slave_dofs.push_back(dofs);
+                                 slave_scalar.push_back(scalar_dof);
+                               });
+        const ContactMapping<dim> phi(faces_near(sides[1 - slave],
+                                                 slave_points,
+                                                 pair.search_radius),
+                                      pair.search_radius);
+        for (unsigned int n = 0; n < slave_points.size(); ++n)
+          {
+            const Point<dim> &x     = slave_points[n];
+            const auto        image = phi.find_image(x);
             if (!image)
               {
-                unmatched.push_back({x, dofs, pair_index});
-                return;
+                unmatched.push_back({x, slave_dofs[n], pair_index});
+                continue;
               }
             auto       projection = *image;
             const bool inside     = (x - image->point) * image->master_normal <
@@ -282,26 +331,40 @@ namespace dyncontact
                 projection.normal = -image->master_normal;
                 projection.gap    = -image->gap;
               }
-            ContactRow row = make_two_body_row<dim>(
-              x, dofs, projection, phi.faces()[image->face], fe.degree);
+            ContactRow row = make_two_body_row<dim>(x,
+                                                    slave_dofs[n],
+                                                    projection,
+                                                    phi.faces()[image->face],
+                                                    fe.degree);
             if (finish_row(row))
-              local_rows.emplace_back(row, scalar_dof);
-          });
+              {
+                rows.rows.push_back(row);
+                row_scalar_dofs.push_back(slave_scalar[n]);
+              }
+          }
         pcout << "   contact pair: slave is side " << slave + 1 << " ("
-              << sides[slave].size() << " faces), master side " << 2 - slave
-              << " (" << sides[1 - slave].size() << " faces)" << std::endl;
+              << n_faces[slave] << " faces), master side " << 2 - slave << " ("
+              << n_faces[1 - slave] << " faces)" << std::endl;
         master_surfaces.push_back(sides[1 - slave]);
       }
 
-    // the penetration check of the slave nodes without a row needs the
-    // master surfaces (and their vertex DoFs as ghosts) only if there are
-    // such nodes
+    // the penetration check of the slave nodes without a row (closest
+    // point at any distance) gathers the whole master surfaces, and their
+    // vertex DoFs as ghosts, but only if there are such nodes: the one
+    // place where a rank holds more than its neighbourhood
     n_unmatched_nodes =
       Utilities::MPI::sum<types::global_dof_index>(unmatched.size(), comm);
     this->locally_owned = locally_owned;
     master_ghosts       = system.locally_relevant_dofs();
     if (n_unmatched_nodes == 0)
       master_surfaces.clear();
+    for (auto &surface : master_surfaces)
+      {
+        std::vector<MasterFace<dim>> all;
+        for (const auto &rank_faces : Utilities::MPI::all_gather(comm, surface))
+          all.insert(all.end(), rank_faces.begin(), rank_faces.end());
+        surface = std::move(all);
+      }
     std::vector<types::global_dof_index> vertex_dofs;
     for (const auto &surface : master_surfaces)
       for (const auto &face : surface)
@@ -314,21 +377,15 @@ namespace dyncontact
     master_ghosts.add_indices(vertex_dofs.begin(), vertex_dofs.end());
     master_ghosts.compress();
 
-    // every rank gets all rows, in rank order
-    const auto all = Utilities::MPI::all_gather(comm, local_rows);
-    for (const auto &rank_rows : all)
-      for (const auto &r : rank_rows)
-        {
-          rows.rows.push_back(r.first);
-          row_scalar_dofs.push_back(r.second);
-        }
-
     row_operator.reinit(locally_owned, system.locally_relevant_dofs(), rows);
 
     double measure = 0.;
     for (const auto &row : rows.rows)
       measure += row.weight;
-    pcout << "   contact rows: " << rows.size()
+    measure = Utilities::MPI::sum(measure, comm);
+    n_global_row_count =
+      Utilities::MPI::sum<types::global_dof_index>(rows.size(), comm);
+    pcout << "   contact rows: " << n_global_row_count
           << ", measure of the slave contact boundary: " << measure
           << std::endl;
   }
@@ -382,20 +439,22 @@ namespace dyncontact
                 }
             }
       }
-    // the deepest over all ranks, with its position
-    const auto all = Utilities::MPI::all_gather(
-      comm,
-      std::make_pair(deepest.depth,
-                     std::vector<double>(deepest.position.begin_raw(),
-                                         deepest.position.end_raw())));
-    deepest = Penetration();
-    for (const auto &[depth, position] : all)
-      if (depth > deepest.depth)
-        {
-          deepest.depth = depth;
-          for (unsigned int d = 0; d < dim; ++d)
-            deepest.position[d] = position[d];
-        }
+    // the deepest over all ranks (the first rank among equals), with its
+    // position
+    const double       depth   = Utilities::MPI::max(deepest.depth, comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int owner =
+      Utilities::MPI::min(depth == deepest.depth ?
+                            my_rank :
+                            Utilities::MPI::n_mpi_processes(comm),
+                          comm);
+    std::vector<double> position(dim, 0.);
+    for (unsigned int d = 0; d < dim; ++d)
+      position[d] = (owner == my_rank) ? deepest.position[d] : 0.;
+    Utilities::MPI::sum(position, comm, position);
+    deepest.depth = depth;
+    for (unsigned int d = 0; d < dim; ++d)
+      deepest.position[d] = position[d];
     return deepest;
   }
 
@@ -403,7 +462,105 @@ namespace dyncontact
 
   template <int dim>
   std::vector<MasterFace<dim>>
-  ContactSetup<dim>::gather_faces(
+  ContactSetup<dim>::faces_near(const std::vector<MasterFace<dim>> &faces,
+                                const std::vector<Point<dim>>      &points,
+                                const double radius) const
+  {
+    // 1. every rank's bounding box of its faces (one box per rank)
+    const unsigned int  n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    std::vector<double> box(2 * dim, 0.);
+    if (!faces.empty())
+      {
+        BoundingBox<dim> local(faces[0].vertices);
+        for (const auto &face : faces)
+          local.merge_with(BoundingBox<dim>(face.vertices));
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            box[d]       = local.get_boundary_points().first[d];
+            box[dim + d] = local.get_boundary_points().second[d];
+          }
+      }
+    else
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          box[d]       = 1.;
+          box[dim + d] = -1.; // empty
+        }
+    const auto boxes = Utilities::MPI::all_gather(comm, box);
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> rank_boxes;
+    for (unsigned int rank = 0; rank < n_ranks; ++rank)
+      if (boxes[rank][0] <= boxes[rank][dim])
+        {
+          Point<dim> lower, upper;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = boxes[rank][d];
+              upper[d] = boxes[rank][dim + d];
+            }
+          rank_boxes.emplace_back(std::make_pair(lower, upper), rank);
+        }
+    const auto rank_tree = pack_rtree(rank_boxes);
+
+    // 2. each point (with its search box) goes to the ranks whose faces'
+    // box it meets
+    std::map<unsigned int, std::vector<double>> requests;
+    for (const Point<dim> &x : points)
+      {
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+        rank_tree.query(boost::geometry::index::intersects(
+                          search_box(x, radius)),
+                        std::back_inserter(hits));
+        for (const auto &hit : hits)
+          requests[hit.second].insert(requests[hit.second].end(),
+                                      x.begin_raw(),
+                                      x.end_raw());
+      }
+    const auto received = Utilities::MPI::some_to_some(comm, requests);
+
+    // 3. each rank answers with its faces whose box meets a requested
+    // point's search box, in its own order
+    std::map<unsigned int, std::vector<MasterFace<dim>>> answers;
+    if (!received.empty())
+      {
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> face_boxes;
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          face_boxes.emplace_back(BoundingBox<dim>(faces[f].vertices), f);
+        const auto tree = pack_rtree(face_boxes);
+        for (const auto &[rank, coordinates] : received)
+          {
+            std::vector<bool> wanted(faces.size(), false);
+            for (std::size_t i = 0; i + dim <= coordinates.size(); i += dim)
+              {
+                Point<dim> x;
+                for (unsigned int d = 0; d < dim; ++d)
+                  x[d] = coordinates[i + d];
+                std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+                tree.query(boost::geometry::index::intersects(
+                             search_box(x, radius)),
+                           std::back_inserter(hits));
+                for (const auto &hit : hits)
+                  wanted[hit.second] = true;
+              }
+            auto &answer = answers[rank];
+            for (unsigned int f = 0; f < faces.size(); ++f)
+              if (wanted[f])
+                answer.push_back(faces[f]);
+          }
+      }
+    // 4. the faces near this rank's points, in rank order (as if the
+    // whole surface had been gathered and then filtered)
+    std::vector<MasterFace<dim>> near;
+    for (const auto &[rank, rank_faces] :
+         Utilities::MPI::some_to_some(comm, answers))
+      near.insert(near.end(), rank_faces.begin(), rank_faces.end());
+    return near;
+  }
+
+
+
+  template <int dim>
+  std::vector<MasterFace<dim>>
+  ContactSetup<dim>::local_faces(
     const SemiDiscreteSystem<dim>         &system,
     const std::vector<types::boundary_id> &ids,
     const std::vector<types::boundary_id> &symmetry_ids) const
@@ -472,10 +629,7 @@ namespace dyncontact
                   }
               local.push_back(master);
             }
-    std::vector<MasterFace<dim>> all;
-    for (const auto &rank_faces : Utilities::MPI::all_gather(comm, local))
-      all.insert(all.end(), rank_faces.begin(), rank_faces.end());
-    return all;
+    return local;
   }
 
   template class ContactSetup<2>;

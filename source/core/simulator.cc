@@ -224,6 +224,7 @@ namespace dyncontact
     double largest = 0.;
     for (const double v : contact->get_row_operator().constraint_values(u))
       largest = std::max(largest, v);
+    largest = Utilities::MPI::max(largest, comm);
     if (largest > 1e-12)
       {
         integrator->project_onto_constraints(u);
@@ -281,7 +282,8 @@ namespace dyncontact
     postprocessors->load(state);
     triangulation.load(Checkpoints::mesh_file(dir));
     setup_discretization();
-    system->deserialize(u, udot);
+    VectorType flags;
+    system->deserialize(u, udot, flags);
     control.load(state);
     AssertThrow(control.get_end_time() > control.get_time(),
                 ExcMessage("Time integration/End time = " +
@@ -290,7 +292,7 @@ namespace dyncontact
                            number(control.get_time()) +
                            " s: a resumed run needs a later End time."));
     make_integrator();
-    integrator->load(state);
+    integrator->load_active_sets(flags);
     vtu_writer->load(state);
     mesh_adaptor->load(state);
     open_outputs();
@@ -364,11 +366,12 @@ namespace dyncontact
   {
     TimerOutput::Scope t(*timer, "checkpoint");
     const std::string  dir = checkpoints.begin(control.get_step());
-    system->prepare_for_serialization(u, udot);
+    VectorType         flags(u);
+    integrator->save_active_sets(flags);
+    system->prepare_for_serialization(u, udot, flags);
     triangulation.save(Checkpoints::mesh_file(dir));
     std::map<std::string, std::string> state;
     control.save(state);
-    integrator->save(state);
     postprocessors->save(state);
     mesh_adaptor->save(state);
     vtu_writer->save(state);
@@ -467,17 +470,17 @@ namespace dyncontact
         record_statistics();
         if (!outputs_open)
           open_outputs();
-        progress->step(control.get_step(),
-                       control.get_time(),
-                       control.get_end_time(),
-                       control.get_timestep(),
-                       std::count(report.active.begin(),
-                                  report.active.end(),
-                                  1),
-                       report.active.size(),
-                       report.displacement_solve.iterations,
-                       report.displacement_solve.linear_iterations +
-                         report.projection_solve.linear_iterations);
+        progress->step(
+          control.get_step(),
+          control.get_time(),
+          control.get_end_time(),
+          control.get_timestep(),
+          Utilities::MPI::sum<types::global_dof_index>(
+            std::count(report.active.begin(), report.active.end(), 1), comm),
+          contact->n_global_rows(),
+          report.displacement_solve.iterations,
+          report.displacement_solve.linear_iterations +
+            report.projection_solve.linear_iterations);
         if (vtu_writer->is_enabled() && control.output_due())
           {
             vtu_writer->write(control.get_time());

@@ -39,10 +39,10 @@ namespace dyncontact
     if (!scene->has_contact())
       text << "none (no rows, no contact search)";
     else if (scene->obstacle())
-      text << "rigid obstacle (no contact search), "
-           << contact->get_rows().size() << " rows";
+      text << "rigid obstacle (no contact search), " << contact->n_global_rows()
+           << " rows";
     else
-      text << "two bodies through phi_h, " << contact->get_rows().size()
+      text << "two bodies through phi_h, " << contact->n_global_rows()
            << " rows on the slave side";
     text << "\n   material: "
          << (system->has_viscous_matrix() ?

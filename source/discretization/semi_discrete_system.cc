@@ -470,15 +470,20 @@ namespace dyncontact
 
   template <int dim>
   std::vector<const VectorType *>
-  SemiDiscreteSystem<dim>::start_transfer(const VectorType &u,
-                                          const VectorType &udot)
+  SemiDiscreteSystem<dim>::start_transfer(
+    const std::vector<const VectorType *> &vectors)
   {
-    transferred.assign(2, VectorType(locally_owned, locally_relevant, comm));
-    transferred[0] = u;
-    transferred[1] = udot;
-    transfer       = std::make_unique<
+    transferred.assign(vectors.size(),
+                       VectorType(locally_owned, locally_relevant, comm));
+    std::vector<const VectorType *> ghosted;
+    for (unsigned int i = 0; i < vectors.size(); ++i)
+      {
+        transferred[i] = *vectors[i];
+        ghosted.push_back(&transferred[i]);
+      }
+    transfer = std::make_unique<
       parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
-    return {&transferred[0], &transferred[1]};
+    return ghosted;
   }
 
 
@@ -488,7 +493,7 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::prepare_for_refinement(const VectorType &u,
                                                   const VectorType &udot)
   {
-    const auto vectors = start_transfer(u, udot);
+    const auto vectors = start_transfer({&u, &udot});
     transfer->prepare_for_coarsening_and_refinement(vectors);
   }
 
@@ -514,9 +519,10 @@ namespace dyncontact
   template <int dim>
   void
   SemiDiscreteSystem<dim>::prepare_for_serialization(const VectorType &u,
-                                                     const VectorType &udot)
+                                                     const VectorType &udot,
+                                                     const VectorType &flags)
   {
-    const auto vectors = start_transfer(u, udot);
+    const auto vectors = start_transfer({&u, &udot, &flags});
     transfer->prepare_for_serialization(vectors);
   }
 
@@ -524,13 +530,16 @@ namespace dyncontact
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::deserialize(VectorType &u, VectorType &udot)
+  SemiDiscreteSystem<dim>::deserialize(VectorType &u,
+                                       VectorType &udot,
+                                       VectorType &flags)
   {
     reinit_vector(u);
     reinit_vector(udot);
+    reinit_vector(flags);
     parallel::distributed::SolutionTransfer<dim, VectorType> loader(
       dof_handler);
-    std::vector<VectorType *> out = {&u, &udot};
+    std::vector<VectorType *> out = {&u, &udot, &flags};
     loader.deserialize(out);
   }
 

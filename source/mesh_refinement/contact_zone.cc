@@ -11,7 +11,6 @@
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 
 #include <cmath>
-#include <set>
 
 namespace dyncontact
 {
@@ -45,23 +44,36 @@ namespace dyncontact
       void
       tag_additional_cells() const override
       {
-        const ContactRows                &rows = this->get_contact().get_rows();
-        std::set<types::global_dof_index> zone;
-        const auto                        violation =
-          this->get_contact().get_row_operator().constraint_values(
-            this->get_solution());
+        // the zone as a nodal indicator: this rank marks its slave nodes
+        // and the master nodes of their images (possibly owned elsewhere),
+        // and every rank then reads it on its locally relevant DoFs
+        const SemiDiscreteSystem<dim> &system = this->get_system();
+        const MPI_Comm                 comm   = this->get_mpi_communicator();
+        const ContactRows             &rows   = this->get_contact().get_rows();
+        const auto &row_operator = this->get_contact().get_row_operator();
+        VectorType  marks;
+        marks.reinit(system.locally_owned_dofs(),
+                     row_operator.ghost_set(),
+                     comm,
+                     true);
+        const auto violation =
+          row_operator.constraint_values(this->get_solution());
         for (unsigned int p = 0; p < rows.size(); ++p)
           {
             const double size = std::pow(rows.rows[p].weight, 1. / (dim - 1));
             if (-violation[p] < std::max(distance, 2. * size))
               {
-                zone.insert(rows.rows[p].entries[0].first);
+                marks(rows.rows[p].entries[0].first) += 1.;
                 for (const auto &[dof0, N] : rows.rows[p].master_nodes)
-                  zone.insert(dof0);
+                  marks(dof0) += 1.;
               }
           }
+        marks.compress(VectorOperation::add);
+        VectorType zone(system.locally_owned_dofs(),
+                        system.locally_relevant_dofs(),
+                        comm);
+        zone = marks;
 
-        const SemiDiscreteSystem<dim> &system = this->get_system();
         const unsigned int max_level = this->get_mesh_adaptor().get_max_level();
         std::vector<types::global_dof_index> dofs(
           system.get_fe().n_dofs_per_cell());
@@ -73,8 +85,8 @@ namespace dyncontact
               for (unsigned int node = 0;
                    node < system.get_scalar_fe().n_dofs_per_cell();
                    ++node)
-                if (zone.count(
-                      dofs[system.get_fe().component_to_system_index(0, node)]))
+                if (zone(dofs[system.get_fe().component_to_system_index(
+                      0, node)]) > 0.)
                   {
                     cell->clear_coarsen_flag();
                     if (cell->level() < int(max_level))

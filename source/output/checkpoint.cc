@@ -113,7 +113,7 @@ namespace dyncontact
         // then the size and checksum of every other file, and the checksum
         // of all of this
         std::ostringstream text;
-        text << "dyncontact-checkpoint 2\n";
+        text << "dyncontact-checkpoint 3\n";
         for (const auto &[key, value] : state)
           text << key << " " << value.size() << "\n" << value << "\n";
         text << "critical_parameters " << critical_parameters.size() << "\n"
@@ -257,7 +257,7 @@ namespace dyncontact
     std::stringstream buffer;
     buffer << in.rdbuf();
     const std::string text = buffer.str();
-    if (text.rfind("dyncontact-checkpoint 2\n", 0) != 0)
+    if (text.rfind("dyncontact-checkpoint 3\n", 0) != 0)
       return "state.txt is not a checkpoint state of this program's version";
     // the last line: "checksum <crc of everything before it>"
     const auto last =

@@ -130,19 +130,17 @@ namespace dyncontact
     TrilinosWrappers::MPI::Vector pressure(scalar_locally_owned, comm),
       active(scalar_locally_owned, comm), critical(scalar_locally_owned, comm),
       gap(scalar_locally_owned, comm);
-    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     for (unsigned int p = 0; p < rows.size(); ++p)
-      if (rows.rows[p].owner == my_rank)
-        {
-          const double force =
-            report.active[p] ? factor * report.multipliers[p] : 0.;
-          pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
-          active(row_scalar_dofs[p])   = report.active[p];
-          critical(row_scalar_dofs[p]) = report.critical[p];
-          gap(row_scalar_dofs[p])      = -violation[p];
-          for (const auto &[dof0, N] : rows.rows[p].master_nodes)
-            master_force(dof0) += N * force;
-        }
+      {
+        const double force =
+          report.active[p] ? factor * report.multipliers[p] : 0.;
+        pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
+        active(row_scalar_dofs[p])   = report.active[p];
+        critical(row_scalar_dofs[p]) = report.critical[p];
+        gap(row_scalar_dofs[p])      = -violation[p];
+        for (const auto &[dof0, N] : rows.rows[p].master_nodes)
+          master_force(dof0) += N * force;
+      }
     master_force.compress(VectorOperation::add);
     for (const auto &[dof0, scalar_dof] : system.get_owned_system0_to_scalar())
       if (master_force(dof0) != 0.)

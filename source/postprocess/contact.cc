@@ -56,11 +56,18 @@ namespace dyncontact
               max_pressure = std::max(max_pressure, f_p / rows.rows[p].weight);
             }
         double max_penetration = 0.;
-        if (!rows.empty())
-          for (const double v :
-               this->get_contact().get_row_operator().constraint_values(
-                 this->get_solution()))
-            max_penetration = std::max(max_penetration, v);
+        for (const double v :
+             this->get_contact().get_row_operator().constraint_values(
+               this->get_solution()))
+          max_penetration = std::max(max_penetration, v);
+        const MPI_Comm comm    = this->get_mpi_communicator();
+        double         sums[3] = {n_active, measure, force};
+        Utilities::MPI::sum(sums, comm, sums);
+        n_active        = sums[0];
+        measure         = sums[1];
+        force           = sums[2];
+        max_pressure    = Utilities::MPI::max(max_pressure, comm);
+        max_penetration = Utilities::MPI::max(max_penetration, comm);
         const auto unmatched =
           this->get_contact().unmatched_penetration(this->get_solution());
         if (unmatched.depth > 0.)

@@ -42,6 +42,7 @@ namespace dyncontact
         for (unsigned int p = 0; p < rows.size(); ++p)
           if (report.critical[p])
             measure += rows.rows[p].weight;
+        measure = Utilities::MPI::sum(measure, this->get_mpi_communicator());
         sum += measure;
         row.insert(row.end(), {measure, sum, report.velocity_correction});
       }

@@ -33,16 +33,13 @@ namespace dyncontact
       {
         const StepReport &report  = this->get_step_report();
         double            largest = 0.;
-        if (!this->get_contact().get_rows().empty())
-          {
-            const auto normal_velocity =
-              this->get_contact().get_row_operator().apply(
-                this->get_velocity());
-            for (unsigned int p = 0; p < normal_velocity.size(); ++p)
-              if (report.active[p])
-                largest = std::max(largest, std::abs(normal_velocity[p]));
-          }
-        row.push_back(largest);
+        const auto        normal_velocity =
+          this->get_contact().get_row_operator().apply(this->get_velocity());
+        for (unsigned int p = 0; p < normal_velocity.size(); ++p)
+          if (report.active[p])
+            largest = std::max(largest, std::abs(normal_velocity[p]));
+        row.push_back(
+          Utilities::MPI::max(largest, this->get_mpi_communicator()));
       }
     };
 

@@ -345,6 +345,7 @@ namespace dyncontact
                 rows,
                 constant_modes,
                 comm)
+    , comm(comm)
   {}
 
 
@@ -411,6 +412,8 @@ namespace dyncontact
     double scale = 1.;
     for (const auto &row : row_operator.rows().rows)
       scale = std::max(scale, std::abs(row.gap));
+    max_violation = Utilities::MPI::max(max_violation, comm);
+    scale         = Utilities::MPI::max(scale, comm);
     if (max_violation > 1e-12 * scale)
       project_onto_constraints(u);
 
@@ -438,42 +441,32 @@ namespace dyncontact
 
 
 
-  namespace
-  {
-    std::string
-    flags(const std::vector<char> &active)
-    {
-      std::string text(active.size(), '0');
-      for (unsigned int p = 0; p < active.size(); ++p)
-        text[p] = active[p] ? '1' : '0';
-      return text;
-    }
-
-    std::vector<char>
-    unflag(const std::string &text)
-    {
-      std::vector<char> active;
-      for (const char c : text)
-        active.push_back(c == '1');
-      return active;
-    }
-  } // namespace
-
-
-
   void
-  TimeIntegrator::save(std::map<std::string, std::string> &state) const
+  TimeIntegrator::save_active_sets(VectorType &flags) const
   {
-    state["displacement_active"] = flags(operators.displacement_active);
-    state["projection_active"]   = flags(operators.projection_active);
+    flags                   = 0.;
+    const ContactRows &rows = operators.contact_rows();
+    for (unsigned int p = 0; p < rows.size(); ++p)
+      flags(rows.rows[p].eliminated_dof()) =
+        (operators.displacement_active[p] ? 1. : 0.) +
+        (operators.projection_active[p] ? 2. : 0.);
+    flags.compress(VectorOperation::insert);
   }
 
 
 
   void
-  TimeIntegrator::load(const std::map<std::string, std::string> &state)
+  TimeIntegrator::load_active_sets(const VectorType &flags)
   {
-    warm_start(unflag(state.at("displacement_active")),
-               unflag(state.at("projection_active")));
+    const ContactRows &rows = operators.contact_rows();
+    std::vector<char>  active(rows.size()), projection(rows.size());
+    for (unsigned int p = 0; p < rows.size(); ++p)
+      {
+        const int flag =
+          static_cast<int>(std::lround(flags(rows.rows[p].eliminated_dof())));
+        active[p]     = (flag & 1) ? 1 : 0;
+        projection[p] = (flag & 2) ? 1 : 0;
+      }
+    warm_start(active, projection);
   }
 } // namespace dyncontact

@@ -28,9 +28,10 @@ namespace dyncontact
 
   /**
    * The contact rows as an operator on distributed vectors: (C v)_p and
-   * (C v - g)_p for every row, the same on all ranks. Each row is evaluated
-   * by the rank that owns its slave node, from a vector with the ghost
-   * entries the rows need.
+   * (C v - g)_p for the rows of this rank (those of its locally owned slave
+   * nodes), from a vector with the ghost entries the rows need (the master
+   * DoFs at their image points). No reduction: a rank that needs a global
+   * figure reduces it itself.
    */
   class ContactRowOperator
   {
@@ -43,11 +44,11 @@ namespace dyncontact
            const IndexSet    &locally_relevant,
            const ContactRows &rows);
 
-    /// (C v)_p for all rows (no gap subtracted).
+    /// (C v)_p for this rank's rows (no gap subtracted).
     std::vector<double>
     apply(const VectorType &v) const;
 
-    /// (C v - g)_p for all rows.
+    /// (C v - g)_p for this rank's rows.
     std::vector<double>
     constraint_values(const VectorType &v) const;
 
@@ -192,7 +193,9 @@ namespace dyncontact
      * @p v is the initial guess, on exit the solution. @p active holds one
      * flag per contact row: the warm start on entry, the final active set on
      * exit. @p multipliers receives mu_p = nu_p . (r - H v)|_p per row
-     * (zero for inactive rows); both are the same on all ranks.
+     * (zero for inactive rows); both for this rank's rows. The ranks agree
+     * on convergence and on a damped (cycling) iteration through scalar
+     * reductions only.
      */
     Result
     solve(const VectorType    &r,

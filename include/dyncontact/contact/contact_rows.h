@@ -37,8 +37,6 @@ namespace dyncontact
     /// Which slave component an active row eliminates (largest |nu_i|
     /// among the components without other constraints).
     unsigned int eliminated = 0;
-    /// MPI rank that owns the slave node.
-    unsigned int owner = 0;
     /// Master nodes at the image point: (component-0 DoF, N_j), for the
     /// master-side contact pressure; empty for a rigid obstacle.
     std::vector<std::pair<global_dof_index, double>> master_nodes;
@@ -54,21 +52,14 @@ namespace dyncontact
     {
       return entries.size() > n_components;
     }
-
-    template <class Archive>
-    void
-    serialize(Archive &ar, const unsigned int)
-    {
-      ar &n_components &entries &normal &position &gap &weight &eliminated
-        &owner &master_nodes;
-    }
   };
 
   /**
-   * All contact rows of the problem, replicated on every MPI rank (the
-   * contact boundary is small compared to the volume), in the same order on
-   * every rank. Obstacles and the two-body mapping produce the same rows, so
-   * the solver and the time integrators never ask which one they have.
+   * The contact rows of one MPI rank: those of its locally owned slave
+   * nodes (distributed: no rank holds another rank's rows, and a global
+   * figure is a reduction). Obstacles and the two-body mapping produce the
+   * same rows, so the solver and the time integrators never ask which one
+   * they have.
    */
   struct ContactRows
   {

@@ -71,7 +71,8 @@ namespace dyncontact
       return rows;
     }
 
-    /// For each row, the scalar DoF of its slave node (for output).
+    /// For each of this rank's rows, the scalar DoF of its slave node (for
+    /// output).
     const std::vector<types::global_dof_index> &
     get_row_scalar_dofs() const
     {
@@ -91,11 +92,21 @@ namespace dyncontact
      * still pass into the other body if the radius was too small: this
      * finds the deepest such node, by the closest point of its deformed
      * position x + u(x) on the deformed master surface (at any distance),
-     * inside if it lies behind the master face. Collective; nothing is done
-     * (and no communication happens) when every slave node has a row.
+     * inside if it lies behind the master face. For this check alone every
+     * rank holds the whole master surface, and only when some slave node
+     * has no row. Collective; nothing is done (and no communication
+     * happens) when every slave node has a row.
      */
     Penetration
     unmatched_penetration(const VectorType &u) const;
+
+    /// The number of contact rows over all ranks (get_rows() holds this
+    /// rank's).
+    types::global_dof_index
+    n_global_rows() const
+    {
+      return n_global_row_count;
+    }
 
     /// The number of slave nodes without a row, over all ranks.
     types::global_dof_index
@@ -112,13 +123,26 @@ namespace dyncontact
     }
 
   private:
-    /// The contact faces with boundary ids @p ids, from all ranks; sides of
-    /// a face shared with a boundary face of @p symmetry_ids (a plane of
-    /// symmetry) are marked.
+    /// This rank's contact faces (of its locally owned cells) with boundary
+    /// ids @p ids; sides of a face shared with a boundary face of
+    /// @p symmetry_ids (a plane of symmetry) are marked.
     std::vector<MasterFace<dim>>
-    gather_faces(const SemiDiscreteSystem<dim>         &system,
-                 const std::vector<types::boundary_id> &ids,
-                 const std::vector<types::boundary_id> &symmetry_ids) const;
+    local_faces(const SemiDiscreteSystem<dim>         &system,
+                const std::vector<types::boundary_id> &ids,
+                const std::vector<types::boundary_id> &symmetry_ids) const;
+
+    /**
+     * The parallel contact search: of the faces that all ranks pass in
+     * @p faces (each its own), those whose bounding box meets the box of
+     * half-width @p radius around one of this rank's @p points, in rank
+     * order. Every rank sends its points only to the ranks whose faces'
+     * bounding box they meet, and gets back only the faces near them; the
+     * only global communication is one bounding box per rank. Collective.
+     */
+    std::vector<MasterFace<dim>>
+    faces_near(const std::vector<MasterFace<dim>> &faces,
+               const std::vector<Point<dim>>      &points,
+               const double                        radius) const;
 
     /// A locally owned slave node without a row.
     struct UnmatchedNode
@@ -131,9 +155,11 @@ namespace dyncontact
     const Parameters           parameters;
     const MPI_Comm             comm;
     ContactRows                rows;
+    types::global_dof_index    n_global_row_count = 0;
     std::vector<UnmatchedNode> unmatched;
     types::global_dof_index    n_unmatched_nodes = 0;
-    /// Per pair (kept only if a node has no row): the master surface.
+    /// Per pair (kept only if a node has no row): the whole master
+    /// surface.
     std::vector<std::vector<MasterFace<dim>>> master_surfaces;
     /// The locally relevant DoFs plus the master surfaces' vertex DoFs.
     IndexSet                             master_ghosts;

@@ -109,12 +109,15 @@ namespace dyncontact
     /// After refinement and setup(): (u, udot) on the new mesh.
     void
     interpolate_after_refinement(VectorType &u, VectorType &udot);
-    /// Attaches (u, udot) to the triangulation for its save().
+    /// Attaches (u, udot) and a nodal vector of @p flags (the warm-start
+    /// active sets) to the triangulation for its save().
     void
-    prepare_for_serialization(const VectorType &u, const VectorType &udot);
-    /// After the triangulation's load() and setup(): (u, udot).
+    prepare_for_serialization(const VectorType &u,
+                              const VectorType &udot,
+                              const VectorType &flags);
+    /// After the triangulation's load() and setup(): (u, udot, flags).
     void
-    deserialize(VectorType &u, VectorType &udot);
+    deserialize(VectorType &u, VectorType &udot, VectorType &flags);
 
     SystemMatrices
     matrices() const;
@@ -248,10 +251,10 @@ namespace dyncontact
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
                             transfer;
     std::vector<VectorType> transferred;
-    /// Copies (u, udot) into ghosted vectors and starts a new transfer
+    /// Copies @p vectors into ghosted vectors and starts a new transfer
     /// object on the current DoFs; returns the vectors to hand to it.
     std::vector<const VectorType *>
-    start_transfer(const VectorType &u, const VectorType &udot);
+    start_transfer(const std::vector<const VectorType *> &vectors);
   };
 } // namespace dyncontact
 

@@ -108,6 +108,13 @@ namespace dyncontact
       return rows->size();
     }
 
+    /// This rank's contact rows.
+    const ContactRows &
+    contact_rows() const
+    {
+      return *rows;
+    }
+
     /// max_i S_ii / M_ii (1 for the static problem): S keeps the mass only
     /// to a relative accuracy of about this times the machine epsilon.
     double inertia_ratio = 1.;
@@ -220,11 +227,16 @@ namespace dyncontact
       return {operators.displacement_active, operators.projection_active};
     }
 
-    /// The warm-start active sets (checkpoints).
+    /**
+     * The warm-start active sets (checkpoints) as a nodal vector, so that
+     * they travel with the distributed mesh data and no rank gathers the
+     * rows of others: at the eliminated DoF of each row, 1 if it is active
+     * in the displacement step, plus 2 if in the projection.
+     */
     void
-    save(std::map<std::string, std::string> &state) const;
+    save_active_sets(VectorType &flags) const;
     void
-    load(const std::map<std::string, std::string> &state);
+    load_active_sets(const VectorType &flags);
 
     const Scheme &
     get_scheme() const
@@ -258,8 +270,9 @@ namespace dyncontact
     StepReport
     empty_report() const;
 
-    const Scheme  scheme;
-    StepOperators operators;
+    const Scheme   scheme;
+    StepOperators  operators;
+    const MPI_Comm comm;
   };
 } // namespace dyncontact
 
