@@ -63,6 +63,17 @@ namespace dyncontact
                       "times Hertz's contact size (plus the initial gap) of "
                       "the first contact point are refined after the global "
                       "refinements.");
+    prm.declare_entry(
+      "Extra refinements of the curved body",
+      "0",
+      Patterns::Integer(0, 5),
+      "How often the cells of the cylinder or ball (body 1) in the contact "
+      "zone are refined after the 'Contact zone refinements' of both "
+      "bodies. With one or more, the curved body is the finer side and "
+      "hence the slave ('Contact/Slave side = auto') against the flat "
+      "block: its nodal pressures then follow Hertz's profile, without the "
+      "node-to-node oscillation that a polygonal curved master surface "
+      "causes (doc/results.md, 3D Hertz).");
     prm.declare_entry("Initial gap",
                       "0.1",
                       Patterns::Double(),
@@ -95,6 +106,7 @@ namespace dyncontact
     drop_velocity       = prm.get_double("Drop velocity");
     initial_gap         = prm.get_double("Initial gap");
     contact_refinements = prm.get_integer("Contact zone refinements");
+    extra_refinements = prm.get_integer("Extra refinements of the curved body");
     prm.leave_subsection();
     prm.leave_subsection();
     const std::string where = "Scene/" + subsection + "/";
@@ -145,6 +157,22 @@ namespace dyncontact
     if (dim == 2)
       return std::sqrt(4. * load * radius / (M_PI * E));
     return std::cbrt(3. * load * radius / (4. * E));
+  }
+
+
+
+  template <int dim>
+  std::optional<double>
+  HertzScene<dim>::exact_contact_pressure(const Point<dim> &x) const
+  {
+    const double size = hertz_contact_size();
+    const double p0   = (dim == 2) ? 2. * load / (M_PI * size) :
+                                     3. * load / (2. * M_PI * size * size);
+    double       r2   = x[0] * x[0];
+    if (dim == 3)
+      r2 += x[dim - 1] * x[dim - 1];
+    const double s = 1. - r2 / (size * size);
+    return s > 0. ? p0 * std::sqrt(s) : 0.;
   }
 
 
@@ -236,11 +264,13 @@ namespace dyncontact
     // refine towards the first contact point (the origin) within 2.5 times
     // Hertz's contact size
     const double zone = 2.5 * hertz_contact_size() + initial_gap;
-    for (unsigned int k = 0; k < contact_refinements; ++k)
+    // (both bodies, then the curved body alone its extra times)
+    for (unsigned int k = 0; k < contact_refinements + extra_refinements; ++k)
       {
         double flagged = 0.;
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned() &&
+              (k < contact_refinements || cell->material_id() == 0) &&
               cell->center().norm() < zone + 0.5 * cell->diameter())
             {
               cell->set_refine_flag();
@@ -256,6 +286,9 @@ namespace dyncontact
                                   "Scene/" + subsection +
                                     "/Contact zone refinements (now " +
                                     std::to_string(contact_refinements) +
+                                    "), Extra refinements of the curved "
+                                    "body (now " +
+                                    std::to_string(extra_refinements) +
                                     ") or Mesh/Initial global refinements",
                                   comm);
         tria.execute_coarsening_and_refinement();

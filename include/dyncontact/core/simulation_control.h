@@ -92,6 +92,13 @@ namespace dyncontact
     bool
     reduce_timestep();
 
+    /// Whether the run is the static problem (one step).
+    bool
+    is_static_problem() const
+    {
+      return is_static;
+    }
+
     /// The state a resumed run needs (step, time, tau, next output).
     void
     save(std::map<std::string, std::string> &state) const;

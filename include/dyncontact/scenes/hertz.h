@@ -65,9 +65,16 @@ namespace dyncontact
     initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
 
-    /// Hertz's contact half-width (2D) or radius (3D), in m.
+    /// Hertz's contact half-width b (2D) or contact radius a (3D), in m.
     double
     hertz_contact_size() const;
+
+    /// Hertz's pressure p0 sqrt(1 - r^2/a^2) at the distance r of @p x from
+    /// the axis through the first contact point (|x_0| in 2D,
+    /// sqrt(x_0^2 + x_2^2) in 3D), with p0 = 2P/(pi b) (2D) or
+    /// 3P/(2 pi a^2) (3D); 0 outside the contact zone.
+    std::optional<double>
+    exact_contact_pressure(const Point<dim> &x) const override;
 
 
 
@@ -93,6 +100,7 @@ namespace dyncontact
     double       drop_velocity;
     double       initial_gap;
     unsigned int contact_refinements;
+    unsigned int extra_refinements;
   };
 
   /// The 2D scene "hertz": a half-cylinder on a block.

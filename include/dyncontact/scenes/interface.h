@@ -245,6 +245,15 @@ namespace dyncontact
       return {};
     }
 
+    /// The exact contact pressure (Pa) of the static problem at the
+    /// reference position @p x of a slave node, where the scene knows it
+    /// (Hertz), else nothing.
+    virtual std::optional<double>
+    exact_contact_pressure(const Point<dim> & /*x*/) const
+    {
+      return {};
+    }
+
     /// Boundary ids of every possible contact boundary (obstacle and pairs).
     std::vector<types::boundary_id>
     all_contact_boundary_ids() const;

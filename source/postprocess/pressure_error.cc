@@ -1,0 +1,75 @@
+// The contact pressure of a static run against the scene's exact pressure
+// (Hertz): the relative L2 error over the slave surface,
+//
+//   sqrt( sum_p w_p (p_h,p - p(x_p))^2 / sum_p w_p p(x_p)^2 ),
+//
+// with the nodal pressure p_h,p = f_p / w_p of an active row (0 of an
+// inactive one), w_p the row's boundary weight and x_p the slave node's
+// reference position. The sums run over every row, so that pressure outside
+// the exact contact zone counts as error as well as pressure missing inside
+// it; the weights make the sums quadratures over the contact surface (on a
+// plane of symmetry a node's weight is that of its half).
+
+#include <deal.II/base/mpi.h>
+
+#include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/postprocess/interface.h>
+#include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/integrators.h>
+
+#include <cmath>
+
+namespace dyncontact
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    class PressureError : public Interface<dim>
+    {
+    public:
+      bool
+      applies() const override
+      {
+        return this->get_control().is_static_problem() &&
+               this->get_scene().exact_contact_pressure(Point<dim>());
+      }
+
+      std::vector<std::string>
+      columns() const override
+      {
+        return {"pressure_error"};
+      }
+
+      void
+      execute(std::vector<double> &row) override
+      {
+        const ContactRows &rows    = this->get_contact().get_rows();
+        const StepReport  &report  = this->get_step_report();
+        const double       factor  = this->get_integrator().force_factor();
+        double             sums[2] = {0., 0.};
+        for (unsigned int p = 0; p < rows.size(); ++p)
+          {
+            const ContactRow &r = rows.rows[p];
+            Point<dim>        x;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = r.position[d];
+            const double exact = *this->get_scene().exact_contact_pressure(x);
+            const double computed =
+              report.active[p] ? factor * report.multipliers[p] / r.weight : 0.;
+            sums[0] += r.weight * (computed - exact) * (computed - exact);
+            sums[1] += r.weight * exact * exact;
+          }
+        Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
+        row.push_back(sums[1] > 0. ? std::sqrt(sums[0] / sums[1]) : 0.);
+      }
+    };
+
+    DYNCONTACT_REGISTER_POSTPROCESSOR(PressureError,
+                                      "pressure error",
+                                      35,
+                                      "relative L2 error of the contact "
+                                      "pressure of a static run against the "
+                                      "scene's exact one (Hertz)")
+  } // namespace Postprocess
+} // namespace dyncontact
