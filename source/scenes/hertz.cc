@@ -71,9 +71,9 @@ namespace dyncontact
       "zone are refined after the 'Contact zone refinements' of both "
       "bodies. With one or more, the curved body is the finer side and "
       "hence the slave ('Contact/Slave side = auto') against the flat "
-      "block: its nodal pressures then follow Hertz's profile, without the "
-      "node-to-node oscillation that a polygonal curved master surface "
-      "causes (doc/results.md, 3D Hertz).");
+      "block: every row's normal is then vertical, and the nodal pressures "
+      "oscillate less than against a polygonal curved master surface "
+      "(doc/results.md, Hertz).");
     prm.declare_entry("Initial gap",
                       "0.1",
                       Patterns::Double(),
