@@ -27,9 +27,16 @@ namespace dyncontact
     locally_owned = owned;
     ghosts        = relevant;
     std::vector<types::global_dof_index> touched;
+    // the rows' DoFs and the component-0 DoFs of the master nodes at their
+    // images (the contact-zone criterion marks these; a zero coefficient,
+    // e.g. of a vertical normal, leaves them out of the entries)
     for (const ContactRow &row : rows.rows)
-      for (const auto &entry : row.entries)
-        touched.push_back(entry.first);
+      {
+        for (const auto &entry : row.entries)
+          touched.push_back(entry.first);
+        for (const auto &node : row.master_nodes)
+          touched.push_back(node.first);
+      }
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     ghosts.add_indices(touched.begin(), touched.end());
