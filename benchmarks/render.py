@@ -2,17 +2,29 @@
 deformed configuration (Warp By Vector of the displacement), coloured by a
 field, with the mesh edges.
 Usage: xvfb-run -a pvpython benchmarks/render.py results/solution.pvd TIME
-           FIELD out.png [x_min x_max y_min y_max]"""
+           FIELD out.png [x_min x_max y_min y_max] [--below=Y]
+           [--camera=X,Y,Z --focus=X,Y,Z]
+--below=Y keeps only the cells below the plane y = Y of the reference
+configuration (in 3D: the block without the ball on it); --camera and
+--focus give a 3D view: from the point X,Y,Z at the point X,Y,Z."""
 import sys
 
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction,
+from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction,
                              PVDReader, SaveScreenshot, Show, WarpByVector)
 
-pvd, t, field, png = sys.argv[1], float(sys.argv[2]), sys.argv[3], sys.argv[4]
-box = [float(v) for v in sys.argv[5:9]] if len(sys.argv) >= 9 else None
+options = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--"))
+args = [a for a in sys.argv[1:] if not a.startswith("--")]
+pvd, t, field, png = args[0], float(args[1]), args[2], args[3]
+box = [float(v) for v in args[4:8]] if len(args) >= 8 else None
 
 reader = PVDReader(FileName=pvd)
-warp = WarpByVector(Input=reader)
+source = reader
+if "below" in options:
+    source = Clip(Input=reader)
+    source.ClipType = "Plane"
+    source.ClipType.Origin = [0, float(options["below"]), 0]
+    source.ClipType.Normal = [0, 1, 0]
+warp = WarpByVector(Input=source)
 warp.Vectors = ["POINTS", "displacement"]
 view = GetActiveViewOrCreate("RenderView")
 view.ViewTime = t
@@ -25,7 +37,11 @@ display.RescaleTransferFunctionToDataRange(True, False)
 display.SetScalarBarVisibility(view, True)
 GetColorTransferFunction(field).ApplyPreset("Viridis (matplotlib)", True)
 view.ResetCamera()
-if box:
+if "camera" in options:
+    view.CameraPosition = [float(v) for v in options["camera"].split(",")]
+    view.CameraFocalPoint = [float(v) for v in options["focus"].split(",")]
+    view.CameraViewUp = [0, 1, 0]
+elif box:
     cx, cy = 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3])
     view.CameraPosition = [cx, cy, 10]
     view.CameraFocalPoint = [cx, cy, 0]

@@ -259,8 +259,11 @@ namespace dyncontact
           if (!homogeneous)
             constraints.set_inhomogeneity(i, row.gap / c_i);
         }
+    // (the contact lines are not restricted to the mesh constraints' local
+    // lines, hence different local lines)
     constraints.merge(mesh_constraints,
-                      AffineConstraints<double>::left_object_wins);
+                      AffineConstraints<double>::left_object_wins,
+                      true);
     constraints.close();
   }
 

@@ -1,5 +1,7 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/distributed/p4est_wrappers.h>
 
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/core/memory_check.h>
@@ -146,6 +148,23 @@ namespace dyncontact
   void
   Simulator<dim>::setup_discretization()
   {
+    // deal.II's cells must be p4est's leaves: where they are not (seen with
+    // deal.II 9.4 on a coarse mesh with rotated faces: deal.II kept eight
+    // children where p4est had coarsened them), every transfer of u, udot or
+    // a checkpoint pairs data with the wrong cells. Stop instead.
+    AssertThrow(
+      Utilities::MPI::logical_or(
+        triangulation.n_locally_owned_active_cells() !=
+          static_cast<unsigned int>(
+            triangulation.get_p4est()->local_num_quadrants),
+        comm) == false,
+      ExcMessage(
+        "the refined mesh is not the one p4est holds (deal.II and p4est "
+        "disagree on the refinement, as deal.II 9.4 did on coarse meshes "
+        "with rotated faces), so the solution cannot be transferred to it. "
+        "Change 'Mesh refinement/Coarsen fraction' or 'Mesh "
+        "refinement/Minimum level', or use a coarse mesh whose faces are in "
+        "standard orientation."));
     {
       TimerOutput::Scope t(*timer, "setup");
       system->setup(triangulation, *scene);

@@ -157,6 +157,11 @@ namespace dyncontact
             subcell_data.boundary_quads.push_back(quad);
           }
       }
+    // deal.II 9.4 and p4est disagree on refinement across rotated or
+    // flipped faces (the 3D quarter ball has them): order the cells so that
+    // faces are in standard orientation where possible
+    if (dim == 3)
+      GridTools::consistently_order_cells(cells);
     result.create_triangulation(vertices, cells, subcell_data);
   }
 
