@@ -199,11 +199,14 @@ namespace dyncontact
     pointwise = is_diagonal;
     for (const ContactRow &row : rows->rows)
       {
+        // (a row without master entries has only its slave node's DoFs,
+        // which this rank's constraints know)
         if (row.has_master_entries())
           pointwise = false;
-        for (const auto &entry : row.entries)
-          if (mesh_constraints.is_constrained(entry.first))
-            pointwise = false;
+        else
+          for (const auto &entry : row.entries)
+            if (mesh_constraints.is_constrained(entry.first))
+              pointwise = false;
       }
     for (const auto &line : mesh_constraints.get_lines())
       if (!line.entries.empty())
