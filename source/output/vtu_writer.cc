@@ -7,7 +7,7 @@
 #include <dyncontact/core/parameters.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/output/vtu_writer.h>
-#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/row_force.h>
 
 #include <cmath>
 #include <fstream>
@@ -122,9 +122,8 @@ namespace dyncontact
     // master side gets each row's force through the weights N_j of its
     // image point), active and critical sets and the current gap
     // g_p - (C u)_p on the slave side
-    const double factor = this->get_integrator().force_factor();
-    VectorType   master_force(system.locally_owned_dofs(), comm);
-    const auto   violation =
+    VectorType master_force(system.locally_owned_dofs(), comm);
+    const auto violation =
       this->get_contact().get_row_operator().constraint_values(
         this->get_solution());
     TrilinosWrappers::MPI::Vector pressure(scalar_locally_owned, comm),
@@ -132,8 +131,7 @@ namespace dyncontact
       gap(scalar_locally_owned, comm);
     for (unsigned int p = 0; p < rows.size(); ++p)
       {
-        const double force =
-          report.active[p] ? factor * report.multipliers[p] : 0.;
+        const double force = row_force(report, this->get_integrator(), p);
         pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
         active(row_scalar_dofs[p])   = report.active[p];
         critical(row_scalar_dofs[p]) = report.critical[p];

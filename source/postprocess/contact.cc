@@ -10,7 +10,7 @@
 #include <dyncontact/core/simulation_control.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
-#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/row_force.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -44,14 +44,13 @@ namespace dyncontact
       {
         const ContactRows &rows   = this->get_contact().get_rows();
         const StepReport  &report = this->get_step_report();
-        const double       factor = this->get_integrator().force_factor();
         double n_active = 0., measure = 0., force = 0., max_pressure = 0.;
         for (unsigned int p = 0; p < rows.size(); ++p)
           if (report.active[p])
             {
               n_active += 1.;
               measure += rows.rows[p].weight;
-              const double f_p = factor * report.multipliers[p];
+              const double f_p = row_force(report, this->get_integrator(), p);
               force += f_p;
               max_pressure = std::max(max_pressure, f_p / rows.rows[p].weight);
             }

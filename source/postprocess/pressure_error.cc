@@ -16,7 +16,7 @@
 #include <dyncontact/core/simulation_control.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
-#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/row_force.h>
 
 #include <cmath>
 
@@ -46,7 +46,6 @@ namespace dyncontact
       {
         const ContactRows &rows    = this->get_contact().get_rows();
         const StepReport  &report  = this->get_step_report();
-        const double       factor  = this->get_integrator().force_factor();
         double             sums[2] = {0., 0.};
         for (unsigned int p = 0; p < rows.size(); ++p)
           {
@@ -56,7 +55,7 @@ namespace dyncontact
               x[d] = r.position[d];
             const double exact = *this->get_scene().exact_contact_pressure(x);
             const double computed =
-              report.active[p] ? factor * report.multipliers[p] / r.weight : 0.;
+              row_force(report, this->get_integrator(), p) / r.weight;
             sums[0] += r.weight * (computed - exact) * (computed - exact);
             sums[1] += r.weight * exact * exact;
           }

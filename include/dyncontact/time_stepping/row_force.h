@@ -1,0 +1,22 @@
+#ifndef dyncontact_time_stepping_row_force_h
+#define dyncontact_time_stepping_row_force_h
+
+#include <dyncontact/time_stepping/integrators.h>
+
+namespace dyncontact
+{
+  /// The normal contact force of row @p p in the step of @p report (N; per
+  /// unit thickness in 2D): the row's multiplier times the integrator's
+  /// force factor if the row is active, 0 if not.
+  inline double
+  row_force(const StepReport     &report,
+            const TimeIntegrator &integrator,
+            const unsigned int    p)
+  {
+    return report.active[p] ?
+             integrator.force_factor() * report.multipliers[p] :
+             0.;
+  }
+} // namespace dyncontact
+
+#endif
