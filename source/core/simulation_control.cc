@@ -41,6 +41,34 @@ namespace dyncontact
                       "If a step's active-set iteration fails, retry it with "
                       "half the time step (and keep that), down to Time step "
                       "/ 1024; otherwise the run stops with a message.");
+    prm.declare_entry(
+      "Time step control",
+      "fixed",
+      Patterns::Selection("fixed|adaptive"),
+      "fixed: every step takes Time step. adaptive: tau moves between the "
+      "levels Time step * 2^k inside [Minimum time step, Maximum time "
+      "step]: a step whose error estimate (see doc/running.md) exceeds "
+      "Time step tolerance is repeated with tau/2, tau doubles after two "
+      "steps below 1/8 of it; a step that would bring a contact row into "
+      "contact (or release one) is shortened to end at the predicted "
+      "moment of that event, and the last step ends at End time. Not used "
+      "by the static scheme.");
+    prm.declare_entry("Minimum time step",
+                      "0",
+                      Patterns::Double(),
+                      "Smallest tau of the adaptive control, in s (> 0 and "
+                      "<= Time step; 0 means Time step / 64).");
+    prm.declare_entry("Maximum time step",
+                      "0",
+                      Patterns::Double(),
+                      "Largest tau of the adaptive control, in s (>= Time "
+                      "step; 0 means Time step).");
+    prm.declare_entry("Time step tolerance",
+                      "0.01",
+                      Patterns::Double(),
+                      "Adaptive control: the largest error estimate of a "
+                      "step that is accepted, relative to the velocity "
+                      "scale sqrt(2 E) (dimensionless, > 0).");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -84,6 +112,10 @@ namespace dyncontact
     time_step            = prm.get_double("Time step");
     end_time             = prm.get_double("End time");
     time_step_adaptation = prm.get_bool("Time step adaptation");
+    adaptive = prm.get("Time step control") == "adaptive" && !static_problem;
+    min_time_step = prm.get_double("Minimum time step");
+    max_time_step = prm.get_double("Maximum time step");
+    tolerance     = prm.get_double("Time step tolerance");
     prm.leave_subsection();
     AssertThrow(std::isfinite(time_step) && time_step > 0.,
                 ExcMessage("Time integration/Time step must be a finite "
@@ -97,6 +129,34 @@ namespace dyncontact
                 ExcMessage("Time integration: End time / Time step = " +
                            number(end_time / time_step) +
                            " steps; at most 1e8 steps are allowed."));
+    if (min_time_step == 0.)
+      min_time_step = time_step / 64.;
+    if (max_time_step == 0.)
+      max_time_step = time_step;
+    AssertThrow(std::isfinite(min_time_step) && min_time_step > 0. &&
+                  min_time_step <= time_step,
+                ExcMessage("Time integration/Minimum time step must be a "
+                           "finite number in (0, Time step = " +
+                           number(time_step) +
+                           "] (s), or 0 for Time step / "
+                           "64; got " +
+                           number(min_time_step) + "."));
+    AssertThrow(std::isfinite(max_time_step) && max_time_step >= time_step,
+                ExcMessage("Time integration/Maximum time step must be a "
+                           "finite number >= Time step = " +
+                           number(time_step) +
+                           " (s), or 0 for Time step; "
+                           "got " +
+                           number(max_time_step) + "."));
+    AssertThrow(std::isfinite(tolerance) && tolerance > 0.,
+                ExcMessage("Time integration/Time step tolerance must be a "
+                           "finite number > 0; got " +
+                           number(tolerance) + "."));
+    AssertThrow(!adaptive || end_time / min_time_step < 1e9,
+                ExcMessage("Time integration: End time / Minimum time step "
+                           "= " +
+                           number(end_time / min_time_step) +
+                           " steps; at most 1e9 are allowed."));
 
     prm.enter_subsection("Output");
     output_interval = prm.get_double("Output interval");
@@ -113,6 +173,7 @@ namespace dyncontact
 
     is_static   = static_problem;
     tau         = time_step;
+    tau_level   = time_step;
     step        = 0;
     time        = 0.;
     time_base   = 0.;
@@ -136,6 +197,66 @@ namespace dyncontact
     ++step;
     ++steps_since;
     time = is_static ? end_time : time_base + steps_since * tau;
+    if (tau != tau_level)
+      {
+        // after a shortened step: back to the level
+        tau = tau_level;
+        restart_count();
+      }
+  }
+
+
+
+  void
+  SimulationControl::restart_count()
+  {
+    time_base   = time;
+    steps_since = 0;
+  }
+
+
+
+  void
+  SimulationControl::shorten(const double new_tau)
+  {
+    Assert(new_tau > 0. && new_tau <= tau_level, ExcInternalError());
+    tau = new_tau;
+    restart_count();
+  }
+
+
+
+  void
+  SimulationControl::clip_to_end_time()
+  {
+    if (adaptive && time + tau > end_time)
+      shorten(end_time - time);
+  }
+
+
+
+  bool
+  SimulationControl::halve()
+  {
+    if (tau_level / 2. < min_time_step * (1. - 1e-12))
+      return false;
+    tau_level /= 2.;
+    tau = tau_level;
+    restart_count();
+    return true;
+  }
+
+
+
+  bool
+  SimulationControl::grow()
+  {
+    if (2. * tau_level > max_time_step * (1. + 1e-12))
+      return false;
+    tau_level *= 2.;
+    tau = tau_level;
+    restart_count();
+    return true;
   }
 
 
@@ -181,12 +302,14 @@ namespace dyncontact
   bool
   SimulationControl::reduce_timestep()
   {
+    if (adaptive)
+      return halve();
     if (!time_step_adaptation || is_static ||
         tau <= time_step / 1024. * (1. + 1e-12))
       return false;
     tau /= 2.;
-    time_base   = time;
-    steps_since = 0;
+    tau_level = tau;
+    restart_count();
     return true;
   }
 
@@ -203,6 +326,7 @@ namespace dyncontact
     state["step"]        = std::to_string(step);
     state["time"]        = exact(time);
     state["tau"]         = exact(tau);
+    state["tau_level"]   = exact(tau_level);
     state["next_output"] = exact(next_output);
   }
 
@@ -211,9 +335,11 @@ namespace dyncontact
   void
   SimulationControl::load(const std::map<std::string, std::string> &state)
   {
-    step        = std::stoul(state.at("step"));
-    time        = std::stod(state.at("time"));
-    tau         = std::stod(state.at("tau"));
+    step = std::stoul(state.at("step"));
+    time = std::stod(state.at("time"));
+    tau  = std::stod(state.at("tau"));
+    tau_level =
+      state.count("tau_level") ? std::stod(state.at("tau_level")) : tau;
     next_output = std::stod(state.at("next_output"));
     // t = t_base + k tau from here on
     time_base   = time;

@@ -14,6 +14,8 @@
 #include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/row_force.h>
+#include <dyncontact/time_stepping/step_size_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -67,7 +69,8 @@ namespace dyncontact
     reference_states = std::make_unique<ReferenceStates<dim>>();
     reference_states->parse_parameters(prm);
     checkpoints.parse_parameters(prm, parameters.output_directory, comm);
-    postprocessors = std::make_unique<Postprocess::Manager<dim>>();
+    step_size_control = std::make_unique<StepSizeControl>();
+    postprocessors    = std::make_unique<Postprocess::Manager<dim>>();
     postprocessors->parse_parameters(prm);
     Progress::Parameters progress_parameters;
     progress_parameters.parse_parameters(prm);
@@ -197,6 +200,19 @@ namespace dyncontact
                                        contact->get_rows(),
                                        system->get_constant_modes(),
                                        comm);
+    // the estimates refer to the old mesh
+    step_size_control->reset();
+    row_forces.clear();
+    settled_rows.assign(contact->get_rows().size(), 1);
+    check_inertia();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_inertia()
+  {
     // in double precision, S = M + tau^2/4 A + tau/2 B keeps the mass only
     // to about eps * max S_ii/M_ii: momentum and energy drift by that much
     const double inertia_accuracy =
@@ -301,8 +317,11 @@ namespace dyncontact
     postprocessors->load(state);
     triangulation.load(Checkpoints::mesh_file(dir));
     setup_discretization();
-    VectorType flags;
-    system->deserialize(u, udot, flags);
+    VectorType                flags, acceleration;
+    std::vector<VectorType *> vectors = {&u, &udot, &flags};
+    if (control.is_adaptive())
+      vectors.push_back(&acceleration);
+    system->deserialize(vectors);
     control.load(state);
     AssertThrow(control.get_end_time() > control.get_time(),
                 ExcMessage("Time integration/End time = " +
@@ -312,6 +331,14 @@ namespace dyncontact
                            " s: a resumed run needs a later End time."));
     make_integrator();
     integrator->load_active_sets(flags);
+    if (control.is_adaptive())
+      {
+        step_size_control->load(state, acceleration);
+        const ContactRows &rows = contact->get_rows();
+        for (unsigned int p = 0; p < rows.size(); ++p)
+          settled_rows[p] =
+            (std::lround(flags(rows.rows[p].eliminated_dof())) & 4) == 0;
+      }
     vtu_writer->load(state);
     mesh_adaptor->load(state);
     open_outputs();
@@ -387,13 +414,33 @@ namespace dyncontact
     const std::string  dir = checkpoints.begin(control.get_step());
     VectorType         flags(u);
     integrator->save_active_sets(flags);
-    system->prepare_for_serialization(u, udot, flags);
+    if (control.is_adaptive())
+      {
+        // + 4: a row that changed its state in the last step
+        const ContactRows &rows = contact->get_rows();
+        for (unsigned int p = 0; p < rows.size(); ++p)
+          if (!settled_rows[p])
+            flags(rows.rows[p].eliminated_dof()) += 4.;
+        flags.compress(VectorOperation::insert);
+      }
+    std::vector<const VectorType *> vectors = {&u, &udot, &flags};
+    VectorType                      acceleration(u);
+    if (control.is_adaptive())
+      {
+        // the error estimate's last acceleration (zero if it has none)
+        acceleration = 0.;
+        if (step_size_control->get_acceleration().size() == u.size())
+          acceleration = step_size_control->get_acceleration();
+        vectors.push_back(&acceleration);
+      }
+    system->prepare_for_serialization(vectors);
     triangulation.save(Checkpoints::mesh_file(dir));
     std::map<std::string, std::string> state;
     control.save(state);
     postprocessors->save(state);
     mesh_adaptor->save(state);
     vtu_writer->save(state);
+    step_size_control->save(state);
     checkpoints.finish(dir, state);
     return dir;
   }
@@ -437,6 +484,109 @@ namespace dyncontact
 
   template <int dim>
   void
+  Simulator<dim>::take_step()
+  {
+    u_old    = u;
+    udot_old = udot;
+    // where the step starts from: its active sets, and the rows' forces
+    const auto start_sets    = integrator->active_sets();
+    bool       event_located = false;
+    auto       back_to_start = [&]() {
+      u    = u_old;
+      udot = udot_old;
+      integrator->warm_start(start_sets.first, start_sets.second);
+    };
+    while (true)
+      {
+        control.clip_to_end_time();
+        integrator->set_time_step(control.get_timestep(),
+                                  !control.step_is_shortened());
+        check_inertia();
+        {
+          TimerOutput::Scope t(*timer, "time step");
+          report = integrator->step(u, udot);
+        }
+        const bool finite =
+          std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
+        if (!report.converged() || !finite)
+          {
+            // back to the last good state; retry with a smaller step, or stop
+            const auto active = integrator->active_sets();
+            u                 = u_old;
+            udot              = udot_old;
+            if (!control.reduce_timestep())
+              stop_after_failed_step(finite);
+            pcout << "   warning: step " << control.get_step() + 1
+                  << " (t = " << control.get_time()
+                  << " s) failed; retrying with tau = "
+                  << control.get_timestep() << " s" << std::endl;
+            integrator->set_time_step(control.get_timestep(), true);
+            integrator->warm_start(active.first, active.second);
+            event_located = false;
+            continue;
+          }
+        if (!control.is_adaptive())
+          return;
+
+        TimerOutput::Scope t(*timer, "time step control");
+        // a contact row that comes into contact or is released inside the
+        // step: end the step at the predicted moment (once per step)
+        if (!event_located)
+          {
+            const double theta =
+              StepSizeControl::event_fraction(*integrator,
+                                              contact->get_row_operator(),
+                                              start_sets.first,
+                                              settled_rows,
+                                              row_forces,
+                                              u_old,
+                                              udot_old,
+                                              u,
+                                              report,
+                                              comm);
+            if (theta < 1. - 1e-2)
+              {
+                back_to_start();
+                control.shorten(theta * control.get_timestep());
+                event_located = true;
+                ++n_located_events;
+                continue;
+              }
+          }
+        const double eta = step_size_control->estimate(
+          integrator->get_operators(), udot_old, udot, control.get_timestep());
+        // a level step above the tolerance is repeated with tau/2
+        if (eta > control.get_tolerance() && !control.step_is_shortened() &&
+            control.halve())
+          {
+            back_to_start();
+            event_located = false;
+            ++n_rejected_steps;
+            continue;
+          }
+        const bool may_grow =
+          step_size_control->accept(integrator->get_operators(),
+                                    udot_old,
+                                    udot,
+                                    control.get_timestep(),
+                                    eta,
+                                    control.get_tolerance());
+        row_forces.resize(report.active.size());
+        for (unsigned int p = 0; p < row_forces.size(); ++p)
+          {
+            row_forces[p]   = row_force(report, *integrator, p);
+            settled_rows[p] = (report.active[p] == start_sets.first[p]);
+          }
+        // grows after the step is recorded (control.advance() first)
+        grow_after_step = may_grow && !control.step_is_shortened();
+        return;
+      }
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::run_time_loop()
   {
     pcout << "dyncontact: scene '" << scene->name() << "', " << dim
@@ -459,30 +609,7 @@ namespace dyncontact
     while (control.keep_going())
       {
         Timer step_timer;
-        u_old    = u;
-        udot_old = udot;
-        {
-          TimerOutput::Scope t(*timer, "time step");
-          report = integrator->step(u, udot);
-        }
-        const bool finite =
-          std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
-        if (!report.converged() || !finite)
-          {
-            // back to the last good state; retry with a smaller step, or stop
-            u    = u_old;
-            udot = udot_old;
-            if (!control.reduce_timestep())
-              stop_after_failed_step(finite);
-            pcout << "   warning: step " << control.get_step() + 1
-                  << " (t = " << control.get_time()
-                  << " s) failed; retrying with tau = "
-                  << control.get_timestep() << " s" << std::endl;
-            const auto active = integrator->active_sets();
-            make_integrator();
-            integrator->warm_start(active.first, active.second);
-            continue;
-          }
+        take_step();
         control.advance();
         step_timer.stop();
         step_wall_time = step_timer.wall_time();
@@ -500,6 +627,9 @@ namespace dyncontact
           report.displacement_solve.iterations,
           report.displacement_solve.linear_iterations +
             report.projection_solve.linear_iterations);
+        if (grow_after_step)
+          control.grow();
+        grow_after_step = false;
         if (vtu_writer->is_enabled() && control.output_due())
           {
             vtu_writer->write(control.get_time());

@@ -518,28 +518,24 @@ namespace dyncontact
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::prepare_for_serialization(const VectorType &u,
-                                                     const VectorType &udot,
-                                                     const VectorType &flags)
+  SemiDiscreteSystem<dim>::prepare_for_serialization(
+    const std::vector<const VectorType *> &vectors)
   {
-    const auto vectors = start_transfer({&u, &udot, &flags});
-    transfer->prepare_for_serialization(vectors);
+    const auto ghosted = start_transfer(vectors);
+    transfer->prepare_for_serialization(ghosted);
   }
 
 
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::deserialize(VectorType &u,
-                                       VectorType &udot,
-                                       VectorType &flags)
+  SemiDiscreteSystem<dim>::deserialize(const std::vector<VectorType *> &vectors)
   {
-    reinit_vector(u);
-    reinit_vector(udot);
-    reinit_vector(flags);
+    for (VectorType *v : vectors)
+      reinit_vector(*v);
     parallel::distributed::SolutionTransfer<dim, VectorType> loader(
       dof_handler);
-    std::vector<VectorType *> out = {&u, &udot, &flags};
+    std::vector<VectorType *> out = vectors;
     loader.deserialize(out);
   }
 

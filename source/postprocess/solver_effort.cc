@@ -1,5 +1,6 @@
 // Solver effort of the step: active-set iterations of the displacement step
-// and of the projection, CG iterations of both, and the wall time.
+// and of the projection, CG iterations of both, the wall time, and the time
+// step tau of the step.
 
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
@@ -18,7 +19,8 @@ namespace dyncontact
         return {"active_set_iterations",
                 "projection_iterations",
                 "linear_iterations",
-                "step_wall_time"};
+                "step_wall_time",
+                "time_step"};
       }
 
       void
@@ -30,7 +32,8 @@ namespace dyncontact
                     double(report.projection_solve.iterations),
                     double(report.displacement_solve.linear_iterations +
                            report.projection_solve.linear_iterations),
-                    this->get_step_wall_time()});
+                    this->get_step_wall_time(),
+                    this->get_integrator().time_step()});
       }
     };
 
@@ -38,6 +41,6 @@ namespace dyncontact
                                       "solver effort",
                                       60,
                                       "active-set and CG iterations, wall "
-                                      "time of the step")
+                                      "time and time step of the step")
   } // namespace Postprocess
 } // namespace dyncontact

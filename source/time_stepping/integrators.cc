@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace dyncontact
 {
@@ -22,28 +23,52 @@ namespace dyncontact
     const MPI_Comm                        comm)
     : displacement_active(rows.size(), 0)
     , projection_active(rows.size(), 0)
-    , time_step(tau)
+    , is_static(is_static)
     , system(system)
-    , displacement_solver(solver_parameters, comm)
+    , solver_parameters(solver_parameters)
+    , locally_owned(locally_owned)
+    , locally_relevant(locally_relevant)
+    , mesh_constraints(&mesh_constraints)
+    , constant_modes(constant_modes)
+    , comm(comm)
     , projection_solver(solver_parameters, comm)
     , rows(&rows)
   {
-    displacement_solver.reinit(locally_owned,
-                               locally_relevant,
-                               mesh_constraints,
-                               rows);
-    displacement_solver.set_constant_modes(constant_modes);
     if (is_static)
       {
         // H = A; AMG gets A + eps M, which stays SPD without Dirichlet data
-        S.copy_from(*system.A);
         preconditioner_matrix.copy_from(*system.A);
         preconditioner_matrix.add(1e-6 * system.A->linfty_norm() /
                                     system.M->linfty_norm(),
                                   *system.M);
-        displacement_solver.set_matrix(S, false, &preconditioner_matrix);
         // start with every row active: the bodies are held by the contact
         displacement_active.assign(rows.size(), 1);
+      }
+    set_time_step(tau, true);
+    projection_solver.reinit(locally_owned,
+                             locally_relevant,
+                             mesh_constraints,
+                             rows);
+    projection_solver.set_matrix(*system.M, system.lumped_mass);
+  }
+
+
+
+  std::unique_ptr<StepOperators::StepMatrix>
+  StepOperators::make_step_matrix(const double tau) const
+  {
+    auto step_matrix = std::make_unique<StepMatrix>();
+    step_matrix->tau = tau;
+    step_matrix->solver =
+      std::make_unique<ActiveSetSolver>(solver_parameters, comm);
+    ActiveSetSolver &solver = *step_matrix->solver;
+    MatrixType      &S      = step_matrix->S;
+    solver.reinit(locally_owned, locally_relevant, *mesh_constraints, *rows);
+    solver.set_constant_modes(constant_modes);
+    if (is_static)
+      {
+        S.copy_from(*system.A);
+        solver.set_matrix(S, false, &preconditioner_matrix);
       }
     else
       {
@@ -52,20 +77,47 @@ namespace dyncontact
         S.add(tau * tau / 4., *system.A);
         if (system.B != nullptr)
           S.add(tau / 2., *system.B);
-        displacement_solver.set_matrix(S, false);
+        solver.set_matrix(S, false);
         // how far the stiffness and viscosity outweigh the mass in S
+        double ratio = 1.;
         for (const auto i : locally_owned)
           if (system.M->diag_element(i) > 0.)
-            inertia_ratio =
-              std::max(inertia_ratio,
-                       S.diag_element(i) / system.M->diag_element(i));
-        inertia_ratio = Utilities::MPI::max(inertia_ratio, comm);
+            ratio =
+              std::max(ratio, S.diag_element(i) / system.M->diag_element(i));
+        step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
       }
-    projection_solver.reinit(locally_owned,
-                             locally_relevant,
-                             mesh_constraints,
-                             rows);
-    projection_solver.set_matrix(*system.M, system.lumped_mass);
+    return step_matrix;
+  }
+
+
+
+  void
+  StepOperators::set_time_step(const double tau, const bool is_level)
+  {
+    if (current != nullptr && current->tau == tau)
+      return;
+    for (auto level = levels.begin(); level != levels.end(); ++level)
+      if ((*level)->tau == tau)
+        {
+          // most recently used last
+          std::rotate(level, level + 1, levels.end());
+          current = levels.back().get();
+          return;
+        }
+    ++n_step_matrices_built;
+    if (is_level)
+      {
+        if (levels.size() == n_cached_levels)
+          levels.erase(levels.begin());
+        levels.push_back(make_step_matrix(tau));
+        current = levels.back().get();
+      }
+    else
+      {
+        shortened.reset();
+        shortened = make_step_matrix(tau);
+        current   = shortened.get();
+      }
   }
 
 
@@ -76,7 +128,7 @@ namespace dyncontact
                      VectorType       &r) const
   {
     // r(w) = M w - tau^2/4 A u + tau/2 B u + tau^2/2 f
-    const double tau = time_step;
+    const double tau = current->tau;
     VectorType   tmp(u);
     system.M->vmult(r, w);
     system.A->vmult(tmp, u);
@@ -97,7 +149,7 @@ namespace dyncontact
                                     StepReport       &report)
   {
     report.displacement_solve =
-      displacement_solver.solve(r, v, displacement_active, report.multipliers);
+      current->solver->solve(r, v, displacement_active, report.multipliers);
     report.active = displacement_active;
   }
 

@@ -23,12 +23,20 @@ namespace dyncontact
    * checkpoints, and the retry policy of a failed step (tau/2, down to
    * tau/1024, when 'Time step adaptation' is on). The static problem is one
    * step to the end time.
+   *
+   * With 'Time step control = adaptive' tau moves between the levels
+   * Time step * 2^k inside [Minimum time step, Maximum time step]: halve()
+   * after a rejected step, grow() when the error estimate allows, and
+   * shorten() for one step that ends at a located contact event (or at End
+   * time); the step after it returns to the level. t_n then sums the steps
+   * (t = t_base + k tau since the last change of tau).
    */
   class SimulationControl
   {
   public:
     /// Declares Time integration/Time step, End time, Time step
-    /// adaptation; Output/Output interval; Checkpointing/Interval in steps,
+    /// adaptation, Time step control, Minimum/Maximum time step, Time step
+    /// tolerance; Output/Output interval; Checkpointing/Interval in steps,
     /// Interval in minutes.
     static void
     declare_parameters(ParameterHandler &prm);
@@ -92,6 +100,57 @@ namespace dyncontact
     bool
     reduce_timestep();
 
+    /// Whether 'Time step control = adaptive'.
+    bool
+    is_adaptive() const
+    {
+      return adaptive;
+    }
+
+    /// The level tau returns to after a shortened step.
+    double
+    get_level_timestep() const
+    {
+      return tau_level;
+    }
+
+    double
+    get_minimum_timestep() const
+    {
+      return min_time_step;
+    }
+
+    /// The tolerance of the error estimate (adaptive control).
+    double
+    get_tolerance() const
+    {
+      return tolerance;
+    }
+
+    /// Whether the present step is shortened (event or End time).
+    bool
+    step_is_shortened() const
+    {
+      return tau != tau_level;
+    }
+
+    /// Adaptive control: the next step takes @p new_tau < the level (an
+    /// event located inside the step); the level is kept.
+    void
+    shorten(const double new_tau);
+
+    /// Adaptive control: a step that would pass End time ends there.
+    void
+    clip_to_end_time();
+
+    /// Adaptive control: the level tau/2; false at the Minimum time step.
+    bool
+    halve();
+
+    /// Adaptive control: the level 2 tau; false at the Maximum time step.
+    bool
+    grow();
+
     /// Whether the run is the static problem (one step).
     bool
     is_static_problem() const
@@ -116,9 +175,18 @@ namespace dyncontact
     unsigned int checkpoint_steps     = 0;
     double       checkpoint_minutes   = 0.;
     bool         is_static            = false;
+    bool         adaptive             = false;
+    double       min_time_step        = 0.;
+    double       max_time_step        = 0.;
+    double       tolerance            = 1e-2;
+
+    /// t = t_base + k tau from here on (after a change of tau)
+    void
+    restart_count();
 
     // state
     double       tau         = 0.0125;
+    double       tau_level   = 0.0125;
     unsigned int step        = 0;
     double       time        = 0.;
     double       time_base   = 0.;

@@ -28,6 +28,7 @@ namespace dyncontact
   class VtuWriter;
   class OutputDirectory;
   class Progress;
+  class StepSizeControl;
 
   /**
    * The time loop, and nothing else: it builds the scene's mesh, asks the
@@ -73,6 +74,15 @@ namespace dyncontact
     setup_discretization();
     void
     make_integrator();
+    /// Warns once if S = M + tau^2/4 A + tau/2 B keeps the mass only to a
+    /// poor relative accuracy.
+    void
+    check_inertia();
+    /// One step from (u, udot) = (u_old, udot_old), repeated as the time
+    /// step control asks (a failed solve, a located contact event, an error
+    /// estimate above the tolerance); returns once a step is accepted.
+    void
+    take_step();
     /// The initial state and its statistics row (a new run).
     void
     start();
@@ -124,6 +134,16 @@ namespace dyncontact
     double     step_wall_time = 0.;
     bool       outputs_open   = false;
     bool       warned_inertia = false;
+    /// 'Time step control = adaptive': the estimates, the rows' forces of
+    /// the last accepted step (for release events), and counts of the
+    /// steps that were repeated.
+    std::unique_ptr<StepSizeControl> step_size_control;
+    std::vector<double>              row_forces;
+    /// per row: whether the last accepted step left it in its state
+    std::vector<char> settled_rows;
+    unsigned int      n_located_events = 0;
+    unsigned int      n_rejected_steps = 0;
+    bool              grow_after_step  = false;
 
     std::unique_ptr<MeshAdaptor<dim>>          mesh_adaptor;
     std::unique_ptr<Postprocess::Manager<dim>> postprocessors;

@@ -109,15 +109,15 @@ namespace dyncontact
     /// After refinement and setup(): (u, udot) on the new mesh.
     void
     interpolate_after_refinement(VectorType &u, VectorType &udot);
-    /// Attaches (u, udot) and a nodal vector of @p flags (the warm-start
-    /// active sets) to the triangulation for its save().
+    /// Attaches @p vectors (u, udot, a nodal vector of the warm-start
+    /// active sets, and what else the run needs to resume) to the
+    /// triangulation for its save().
     void
-    prepare_for_serialization(const VectorType &u,
-                              const VectorType &udot,
-                              const VectorType &flags);
-    /// After the triangulation's load() and setup(): (u, udot, flags).
+    prepare_for_serialization(const std::vector<const VectorType *> &vectors);
+    /// After the triangulation's load() and setup(): the vectors, in the
+    /// order and number they were saved.
     void
-    deserialize(VectorType &u, VectorType &udot, VectorType &flags);
+    deserialize(const std::vector<VectorType *> &vectors);
 
     SystemMatrices
     matrices() const;

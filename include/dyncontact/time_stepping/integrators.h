@@ -5,6 +5,7 @@
 #include <dyncontact/discretization/semi_discrete_system.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -75,7 +76,7 @@ namespace dyncontact
     double
     tau() const
     {
-      return time_step;
+      return current->tau;
     }
 
     /// The load f.
@@ -117,21 +118,69 @@ namespace dyncontact
 
     /// max_i S_ii / M_ii (1 for the static problem): S keeps the mass only
     /// to a relative accuracy of about this times the machine epsilon.
-    double inertia_ratio = 1.;
+    double
+    inertia_ratio() const
+    {
+      return current->inertia_ratio;
+    }
 
     /// The warm-start active sets (displacement step, projection).
     std::vector<char> displacement_active;
     std::vector<char> projection_active;
 
+    /**
+     * Steps with @p tau from now on. S = M + tau^2/4 A + tau/2 B and its
+     * AMG are built only for a tau not seen before: the last
+     * n_cached_levels levels (@p is_level) are kept, a shortened step's
+     * (not a level) only until the next one.
+     */
+    void
+    set_time_step(const double tau, const bool is_level);
+
+    /// S_ii, the step matrix's diagonal at locally owned DoF @p i.
+    double
+    step_matrix_diagonal(const types::global_dof_index i) const
+    {
+      return current->S.diag_element(i);
+    }
+
+    /// How many S (with AMG) of tau levels are kept.
+    static constexpr unsigned int n_cached_levels = 4;
+
+    /// How many step matrices have been built (one per new tau).
+    unsigned int n_step_matrices_built = 0;
+
   private:
-    const double         time_step;
-    const SystemMatrices system;
-    MatrixType           S;
+    /// S for one tau with its active-set solver (which holds the AMG).
+    struct StepMatrix
+    {
+      double                           tau           = 0.;
+      double                           inertia_ratio = 1.;
+      MatrixType                       S;
+      std::unique_ptr<ActiveSetSolver> solver;
+    };
+
+    std::unique_ptr<StepMatrix>
+    make_step_matrix(const double tau) const;
+
+    const bool                        is_static;
+    const SystemMatrices              system;
+    const ActiveSetSolver::Parameters solver_parameters;
+    const IndexSet                    locally_owned;
+    const IndexSet                    locally_relevant;
+    /// (must outlive the operators, as the system matrices and rows)
+    const AffineConstraints<double>     *mesh_constraints;
+    const std::vector<std::vector<bool>> constant_modes;
+    const MPI_Comm                       comm;
     /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
-    MatrixType         preconditioner_matrix;
-    ActiveSetSolver    displacement_solver;
-    ActiveSetSolver    projection_solver;
-    const ContactRows *rows;
+    MatrixType preconditioner_matrix;
+    /// the step matrices of tau levels, the most recently used last
+    std::vector<std::unique_ptr<StepMatrix>> levels;
+    /// a shortened step's matrix (not a level)
+    std::unique_ptr<StepMatrix> shortened;
+    StepMatrix                 *current = nullptr;
+    ActiveSetSolver             projection_solver;
+    const ContactRows          *rows;
   };
 
   /// One scheme's step (or initial velocity): advances (u, udot) in place.
@@ -254,7 +303,21 @@ namespace dyncontact
     double
     inertia_ratio() const
     {
-      return operators.inertia_ratio;
+      return operators.inertia_ratio();
+    }
+
+    /// Steps with @p tau from now on (StepOperators::set_time_step()).
+    void
+    set_time_step(const double tau, const bool is_level)
+    {
+      operators.set_time_step(tau, is_level);
+    }
+
+    /// The operators (for the step control's estimates).
+    const StepOperators &
+    get_operators() const
+    {
+      return operators;
     }
 
     /// Factor from a multiplier mu_p to the contact force: 2/tau^2 for the

@@ -1,0 +1,175 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <dyncontact/time_stepping/step_size_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  double
+  StepSizeControl::event_fraction(const TimeIntegrator      &integrator,
+                                  const ContactRowOperator  &row_operator,
+                                  const std::vector<char>   &active_before,
+                                  const std::vector<char>   &settled,
+                                  const std::vector<double> &forces_before,
+                                  const VectorType          &u_old,
+                                  const VectorType          &udot_old,
+                                  const VectorType          &u,
+                                  const StepReport          &trial,
+                                  const MPI_Comm             comm)
+  {
+    // events in the first hundredth of the step are not located: the step
+    // would be too short to be worth it (and it is where the step after a
+    // located event finds its row, at a gap of round-off size)
+    const double       smallest = 1e-2;
+    const double       tau      = integrator.time_step();
+    const ContactRows &rows     = row_operator.rows();
+    const std::size_t  n        = row_operator.size();
+    const bool known = (active_before.size() == n && settled.size() == n);
+    // a row is new in contact if the trial's displacement step or its
+    // projection holds it and it was free at t_n
+    auto comes_into_contact = [&](const std::size_t p) {
+      return settled[p] && !active_before[p] &&
+             (trial.active[p] || trial.projection_active[p]);
+    };
+    auto is_released = [&](const std::size_t p) {
+      return settled[p] && active_before[p] && !trial.active[p] &&
+             forces_before.size() == n && forces_before[p] > 0.;
+    };
+    bool has_event = false;
+    for (std::size_t p = 0; known && p < n && !has_event; ++p)
+      has_event = comes_into_contact(p) || is_released(p);
+    double fraction = 2.;
+    if (Utilities::MPI::logical_or(has_event, comm))
+      {
+        const auto           before    = row_operator.constraint_values(u_old);
+        const auto           rate      = row_operator.apply(udot_old);
+        const auto           after     = row_operator.constraint_values(u);
+        const StepOperators &operators = integrator.get_operators();
+        for (std::size_t p = 0; known && p < n; ++p)
+          {
+            double theta = 2.;
+            if (comes_into_contact(p) && before[p] < 0.)
+              {
+                if (rate[p] > 0.)
+                  // c_p(t) = c_p(t_n) + (t - t_n) (C udot^n)_p reaches 0;
+                  // N-CS++'s projection looks one step beyond the trial
+                  theta = -before[p] / (rate[p] * tau);
+                else if (trial.active[p])
+                  {
+                    // pulled into contact (no approaching velocity): the
+                    // penetration the multiplier stands for, mu_p / S_ee
+                    const double end =
+                      trial.multipliers[p] / operators.step_matrix_diagonal(
+                                               rows.rows[p].eliminated_dof());
+                    if (end > 0.)
+                      theta = -before[p] / (end - before[p]);
+                  }
+              }
+            else if (is_released(p) && after[p] < 0.)
+              {
+                // released: the force from > 0 at t_n to the -2/tau^2 S_ee
+                // gap_p that the trial's opened gap stands for
+                const double end = 2. / (tau * tau) *
+                                   operators.step_matrix_diagonal(
+                                     rows.rows[p].eliminated_dof()) *
+                                   after[p];
+                theta = forces_before[p] / (forces_before[p] - end);
+              }
+            if (theta >= smallest)
+              fraction = std::min(fraction, theta);
+          }
+      }
+    fraction = Utilities::MPI::min(fraction, comm);
+    // an event in (t_n + tau, t_n + 2 tau): two steps of half that length,
+    // so that the first one's look ahead ends at the event
+    if (fraction >= 1. && fraction < 2.)
+      return fraction / 2.;
+    return std::min(fraction, 1.);
+  }
+
+
+
+  double
+  StepSizeControl::estimate(const StepOperators &operators,
+                            const VectorType    &udot_old,
+                            const VectorType    &udot,
+                            const double         tau) const
+  {
+    if (!has_history)
+      return 0.;
+    const double scale = std::max({velocity_scale,
+                                   operators.mass_norm(udot),
+                                   operators.mass_norm(udot_old)});
+    if (scale == 0.)
+      return 0.;
+    // a_n - a_{n-1}
+    VectorType difference(udot);
+    difference -= udot_old;
+    difference /= tau;
+    difference -= acceleration;
+    return tau * operators.mass_norm(difference) /
+           (6. * (1. + previous_tau / tau) * scale);
+  }
+
+
+
+  bool
+  StepSizeControl::accept(const StepOperators &operators,
+                          const VectorType    &udot_old,
+                          const VectorType    &udot,
+                          const double         tau,
+                          const double         eta,
+                          const double         tolerance)
+  {
+    n_small      = (has_history && eta < tolerance / 8.) ? n_small + 1 : 0;
+    acceleration = udot;
+    acceleration -= udot_old;
+    acceleration /= tau;
+    previous_tau   = tau;
+    velocity_scale = std::max({velocity_scale,
+                               operators.mass_norm(udot),
+                               operators.mass_norm(udot_old)});
+    has_history    = true;
+    if (n_small >= 2)
+      {
+        n_small = 0;
+        return true;
+      }
+    return false;
+  }
+
+
+
+  void
+  StepSizeControl::save(std::map<std::string, std::string> &state) const
+  {
+    std::ostringstream s;
+    s << std::setprecision(17) << previous_tau << " " << velocity_scale << " "
+      << (has_history ? 1 : 0) << " " << n_small;
+    state["step_size_control"] = s.str();
+  }
+
+
+
+  void
+  StepSizeControl::load(const std::map<std::string, std::string> &state,
+                        const VectorType &checkpoint_acceleration)
+  {
+    reset();
+    if (state.count("step_size_control") == 0)
+      return;
+    std::istringstream s(state.at("step_size_control"));
+    int                history = 0;
+    s >> previous_tau >> velocity_scale >> history >> n_small;
+    AssertThrow(!s.fail(),
+                ExcMessage("the step size control's state in the checkpoint "
+                           "is damaged"));
+    has_history  = (history == 1);
+    acceleration = checkpoint_acceleration;
+  }
+} // namespace dyncontact

@@ -1,0 +1,125 @@
+// 'Time step control = adaptive' on the bar impact with an impact time off
+// the time grid (g0 = 0.1037 m, v = 1 m/s: contact at t = 0.1037 s; tau =
+// h/2c = 0.0125 s). For N-CI, N-CS and N-CS++:
+// - event location: the first step with active rows starts within tau/100
+//   of the exact contact time (fixed tau: the nearest grid time, 0.0037 s
+//   = 0.3 tau away, fails this);
+// - the energy statement (Theorem 3.2): energy_balance grows in no step by
+//   more than 1e-9 of the initial energy, as with fixed tau;
+// - N-CS++: persistency (eq. 19), udot.nu = 0 at active nodes;
+// - bookkeeping: the times are the sums of the recorded time steps, the
+//   last step ends at End time, every level is Time step * 2^k within
+//   [Minimum, Maximum], and tau grows above Time step in the free flight
+//   before the impact.
+// And a checkpointed adaptive run resumed from half time gives the same
+// statistics as the uninterrupted one (tau levels and the estimator's
+// history are in the checkpoint).
+
+#include "tests.h"
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  const double      tau = 0.0125, contact_time = 0.1037;
+  const std::string adaptive =
+    scene_entries("Bar impact", "    set Initial gap = 0.1037\n") +
+    "subsection Time integration\n"
+    "  set Time step control = adaptive\n"
+    "  set Minimum time step = 0.0015625\n"
+    "  set Maximum time step = 0.05\n"
+    "  set Time step tolerance = 0.003\n"
+    "end\n";
+  const std::string off_grid =
+    scene_entries("Bar impact", "    set Initial gap = 0.1037\n");
+
+  // the start of the first step with active rows
+  auto contact_start = [](const Statistics &s) {
+    const auto t = s.column("time"), a = s.column("active_nodes");
+    for (unsigned int i = 1; i < t.size(); ++i)
+      if (a[i] > 0)
+        return t[i - 1];
+    return -1.;
+  };
+  auto largest_balance_increase = [](const Statistics &s) {
+    const auto b        = s.column("energy_balance");
+    double     increase = -1e300;
+    for (unsigned int i = 1; i < b.size(); ++i)
+      increase = std::max(increase, b[i] - b[i - 1]);
+    return increase;
+  };
+
+  for (const std::string scheme : {"N-CI", "N-CS", "N-CS++"})
+    {
+      const Statistics fixed = run(bar_prm(2, scheme, 40, tau, 2.5, off_grid));
+      const Statistics s     = run(bar_prm(2, scheme, 40, tau, 2.5, adaptive));
+      const auto       t = s.column("time"), dt = s.column("time_step");
+
+      const double fixed_miss = std::abs(contact_start(fixed) - contact_time);
+      const double miss       = std::abs(contact_start(s) - contact_time);
+      log() << scheme << ": contact starts " << fmt(fixed_miss / tau, 2)
+            << " tau from the exact time with fixed tau; adaptive within "
+            << "tau/100: " << check(miss <= 0.01 * tau) << "\n";
+      std::cout << scheme << ": " << t.size() - 1 << " steps, contact start "
+                << contact_start(s) << ", final error "
+                << s.column("error_energy_norm").back() << " (fixed "
+                << fixed.column("error_energy_norm").back() << ")" << std::endl;
+
+      const double energy0 = s.column("energy_total")[0];
+      log() << "  energy_balance grows by at most 1e-9 E0 per step: "
+            << check(largest_balance_increase(s) <= 1e-9 * energy0) << "\n";
+      if (scheme == "N-CS++")
+        {
+          double normal_velocity = 0.;
+          for (const double v : s.column("max_active_normal_velocity"))
+            normal_velocity = std::max(normal_velocity, v);
+          log() << "  persistency at active nodes (< 1e-10 m/s): "
+                << check(normal_velocity < 1e-10) << "\n";
+        }
+
+      bool sums = true, levels_ok = true;
+      bool grew = false;
+      for (unsigned int i = 1; i < t.size(); ++i)
+        {
+          grew           = grew || (t[i] < contact_time && dt[i] > 1.5 * tau);
+          sums           = sums && std::abs(t[i] - t[i - 1] - dt[i]) <= 1e-12;
+          const double k = std::log2(dt[i] / tau);
+          if (std::abs(k - std::round(k)) < 1e-12)
+            levels_ok = levels_ok && dt[i] >= 0.0015625 * (1 - 1e-12) &&
+                        dt[i] <= 0.05 * (1 + 1e-12);
+        }
+      log() << "  t_n+1 - t_n = recorded tau, last step ends at End time, "
+            << "levels Time step * 2^k in [min, max]: "
+            << check(sums && std::abs(t.back() - 2.5) < 1e-12 && levels_ok)
+            << "\n";
+      log() << "  tau grows in the free flight before the impact: "
+            << check(grew) << "\n";
+    }
+
+  // resumed from a checkpoint at half time: the same statistics
+  auto prm = [&](const std::string &run, const double end, const bool resume) {
+    return bar_prm(2, "N-CS++", 40, tau, end, adaptive) +
+           "set Output directory = results-adaptive-" + run + "\n" +
+           "subsection Checkpointing\n  set Interval in steps = 60\n" +
+           "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
+  };
+  const Statistics full = run(prm("full", 2.5, false));
+  run(prm("split", 1.25, false));
+  const Statistics resumed    = run(prm("split", 2.5, true));
+  double           difference = 0.;
+  bool             same_shape =
+    full.rows.size() == resumed.rows.size() && full.columns == resumed.columns;
+  for (unsigned int c = 0; same_shape && c < full.columns.size(); ++c)
+    if (full.columns[c] != "step_wall_time")
+      for (unsigned int i = 0; i < full.rows.size(); ++i)
+        difference =
+          std::max(difference, std::abs(full.rows[i][c] - resumed.rows[i][c]));
+  std::cout << "resumed: " << resumed.rows.size() << " rows, full "
+            << full.rows.size() << ", largest difference " << difference
+            << std::endl;
+  log() << "adaptive run resumed at half time: same statistics (1e-12): "
+        << check(same_shape && difference <= 1e-12) << "\n";
+}
