@@ -10,10 +10,17 @@
 // - bookkeeping: the times are the sums of the recorded time steps, the
 //   last step ends at End time, every level is Time step * 2^k within
 //   [Minimum, Maximum], and tau grows above Time step in the free flight
-//   before the impact.
+//   before the impact;
+// - the step matrices S are cached per level: the summary's count of S
+//   built lies between the number of distinct tau of the accepted steps
+//   and that plus the repeated steps, and is below 1 + the number of
+//   changes of tau (which a rebuild at every change would need).
 // And a checkpointed adaptive run resumed from half time gives the same
 // statistics as the uninterrupted one (tau levels and the estimator's
 // history are in the checkpoint).
+
+#include <fstream>
+#include <set>
 
 #include "tests.h"
 
@@ -97,6 +104,34 @@ main(int argc, char **argv)
             << "\n";
       log() << "  tau grows in the free flight before the impact: "
             << check(grew) << "\n";
+
+      // the summary's counts
+      std::ifstream file("output-" + scheme + "-40/summary.txt");
+      std::string   line, text;
+      while (std::getline(file, line))
+        if (line.rfind("time steps:", 0) == 0)
+          text = line;
+      auto count_before = [&](const std::string &what) {
+        const auto end   = text.find(what);
+        auto       begin = text.rfind(' ', end - 2);
+        return end == std::string::npos ?
+                 -1 :
+                 std::stoi(text.substr(begin + 1, end - begin - 1));
+      };
+      const int        built    = count_before(" step matrices S built");
+      const int        repeated = count_before(" steps repeated");
+      std::set<double> distinct(dt.begin() + 1, dt.end());
+      unsigned int     changes = 0;
+      for (unsigned int i = 2; i < dt.size(); ++i)
+        changes += (dt[i] != dt[i - 1]);
+      std::cout << "  S built " << built << ", distinct tau " << distinct.size()
+                << ", repeated " << repeated << ", changes of tau " << changes
+                << std::endl;
+      log() << "  S built once per tau (cache): "
+            << check(built >= int(distinct.size()) &&
+                     built <= int(distinct.size()) + repeated &&
+                     built <= int(changes))
+            << "\n";
     }
 
   // resumed from a checkpoint at half time: the same statistics

@@ -189,6 +189,8 @@ namespace dyncontact
   Simulator<dim>::make_integrator()
   {
     TimerOutput::Scope t(*timer, "setup");
+    if (integrator)
+      n_step_matrices += integrator->get_operators().n_step_matrices_built;
     integrator =
       std::make_unique<TimeIntegrator>(scheme,
                                        control.get_timestep(),
@@ -549,7 +551,7 @@ namespace dyncontact
                 back_to_start();
                 control.shorten(theta * control.get_timestep());
                 event_located = true;
-                ++n_located_events;
+                ++step_size_control->located_events;
                 continue;
               }
           }
@@ -561,9 +563,10 @@ namespace dyncontact
           {
             back_to_start();
             event_located = false;
-            ++n_rejected_steps;
+            ++step_size_control->repeated_steps;
             continue;
           }
+        report.error_estimate = eta;
         const bool may_grow =
           step_size_control->accept(integrator->get_operators(),
                                     udot_old,

@@ -9,6 +9,7 @@
 #include <dyncontact/output/summary.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/step_size_control.h>
 
 #include <cmath>
 #include <fstream>
@@ -52,6 +53,12 @@ namespace dyncontact
          << " mass\n   time: ";
     if (scheme.is_static)
       text << "static problem (one solve)";
+    else if (control.is_adaptive())
+      text << "scheme " << scheme.name << ", adaptive tau in ["
+           << control.get_minimum_timestep() << ", "
+           << control.get_maximum_timestep() << "] s, now "
+           << control.get_timestep() << " s, from t = " << control.get_time()
+           << " to " << control.get_end_time() << " s";
     else
       text << "scheme " << scheme.name << ", tau = " << control.get_timestep()
            << " s, "
@@ -77,7 +84,12 @@ namespace dyncontact
     input.loop_wall_time   = loop_clock.wall_time();
     input.section_wall_times =
       timer->get_summary_data(TimerOutput::total_wall_time);
-    input.section_calls = timer->get_summary_data(TimerOutput::n_calls);
+    input.section_calls       = timer->get_summary_data(TimerOutput::n_calls);
+    input.adaptive_time_steps = control.is_adaptive();
+    input.located_events      = step_size_control->located_events;
+    input.repeated_steps      = step_size_control->repeated_steps;
+    input.step_matrices =
+      n_step_matrices + integrator->get_operators().n_step_matrices_built;
     const std::string text =
       summary_text(postprocessors->get_statistics(), input);
     const std::string file = parameters.output_directory + "/summary.txt";

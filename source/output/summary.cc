@@ -48,6 +48,17 @@ namespace dyncontact
     const unsigned int last   = s.rows.size() - 1;
     out << "steps: " << step[last] << "\n"
         << "time: " << time[0] << " to " << time[last] << " s\n";
+    if (input.adaptive_time_steps && s.has_column("time_step") && last > 0)
+      {
+        const auto tau = s.column("time_step");
+        out << "time steps: adaptive, tau from "
+            << *std::min_element(tau.begin() + 1, tau.end()) << " to "
+            << *std::max_element(tau.begin() + 1, tau.end()) << " s, "
+            << input.located_events << " contact events located, "
+            << input.repeated_steps
+            << " steps repeated for the error estimate, " << input.step_matrices
+            << " step matrices S built\n";
+      }
 
     if (s.has_column("active_nodes"))
       {

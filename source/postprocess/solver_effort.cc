@@ -1,6 +1,6 @@
 // Solver effort of the step: active-set iterations of the displacement step
-// and of the projection, CG iterations of both, the wall time, and the time
-// step tau of the step.
+// and of the projection, CG iterations of both, the wall time, the time
+// step tau of the step and the adaptive control's error estimate of it.
 
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
@@ -20,7 +20,8 @@ namespace dyncontact
                 "projection_iterations",
                 "linear_iterations",
                 "step_wall_time",
-                "time_step"};
+                "time_step",
+                "time_step_estimate"};
       }
 
       void
@@ -33,7 +34,8 @@ namespace dyncontact
                     double(report.displacement_solve.linear_iterations +
                            report.projection_solve.linear_iterations),
                     this->get_step_wall_time(),
-                    this->get_integrator().time_step()});
+                    this->get_integrator().time_step(),
+                    report.error_estimate});
       }
     };
 
@@ -41,6 +43,6 @@ namespace dyncontact
                                       "solver effort",
                                       60,
                                       "active-set and CG iterations, wall "
-                                      "time and time step of the step")
+                                      "time, time step and its error estimate")
   } // namespace Postprocess
 } // namespace dyncontact

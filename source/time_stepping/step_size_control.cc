@@ -30,14 +30,26 @@ namespace dyncontact
     const ContactRows &rows     = row_operator.rows();
     const std::size_t  n        = row_operator.size();
     const bool known = (active_before.size() == n && settled.size() == n);
-    // a row is new in contact if the trial's displacement step or its
+    // the events located are the onset of contact (no row active at t_n)
+    // and the separation (no row active in the trial): in a contact zone
+    // that grows or shrinks node by node (a Hertz drop) locating each
+    // node's event would shorten nearly every step, each with a new S
+    bool any_before = false, any_after = false;
+    for (std::size_t p = 0; known && p < n; ++p)
+      {
+        any_before = any_before || active_before[p];
+        any_after  = any_after || trial.active[p];
+      }
+    const bool onset      = !Utilities::MPI::logical_or(any_before, comm);
+    const bool separation = !Utilities::MPI::logical_or(any_after, comm);
+    // a row comes into contact if the trial's displacement step or its
     // projection holds it and it was free at t_n
     auto comes_into_contact = [&](const std::size_t p) {
-      return settled[p] && !active_before[p] &&
+      return onset && settled[p] && !active_before[p] &&
              (trial.active[p] || trial.projection_active[p]);
     };
     auto is_released = [&](const std::size_t p) {
-      return settled[p] && active_before[p] && !trial.active[p] &&
+      return separation && settled[p] && active_before[p] && !trial.active[p] &&
              forces_before.size() == n && forces_before[p] > 0.;
     };
     bool has_event = false;
@@ -150,7 +162,8 @@ namespace dyncontact
   {
     std::ostringstream s;
     s << std::setprecision(17) << previous_tau << " " << velocity_scale << " "
-      << (has_history ? 1 : 0) << " " << n_small;
+      << (has_history ? 1 : 0) << " " << n_small << " " << located_events << " "
+      << repeated_steps;
     state["step_size_control"] = s.str();
   }
 
@@ -165,7 +178,8 @@ namespace dyncontact
       return;
     std::istringstream s(state.at("step_size_control"));
     int                history = 0;
-    s >> previous_tau >> velocity_scale >> history >> n_small;
+    s >> previous_tau >> velocity_scale >> history >> n_small >>
+      located_events >> repeated_steps;
     AssertThrow(!s.fail(),
                 ExcMessage("the step size control's state in the checkpoint "
                            "is damaged"));

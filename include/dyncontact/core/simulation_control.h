@@ -120,6 +120,12 @@ namespace dyncontact
       return min_time_step;
     }
 
+    double
+    get_maximum_timestep() const
+    {
+      return max_time_step;
+    }
+
     /// The tolerance of the error estimate (adaptive control).
     double
     get_tolerance() const

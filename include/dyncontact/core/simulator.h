@@ -134,16 +134,16 @@ namespace dyncontact
     double     step_wall_time = 0.;
     bool       outputs_open   = false;
     bool       warned_inertia = false;
-    /// 'Time step control = adaptive': the estimates, the rows' forces of
-    /// the last accepted step (for release events), and counts of the
-    /// steps that were repeated.
+    /// 'Time step control = adaptive': the estimates (and counts of the
+    /// repeated steps), the rows' forces of the last accepted step (for
+    /// release events).
     std::unique_ptr<StepSizeControl> step_size_control;
     std::vector<double>              row_forces;
     /// per row: whether the last accepted step left it in its state
     std::vector<char> settled_rows;
-    unsigned int      n_located_events = 0;
-    unsigned int      n_rejected_steps = 0;
-    bool              grow_after_step  = false;
+    bool              grow_after_step = false;
+    /// step matrices S built by the integrators of earlier meshes
+    unsigned int n_step_matrices = 0;
 
     std::unique_ptr<MeshAdaptor<dim>>          mesh_adaptor;
     std::unique_ptr<Postprocess::Manager<dim>> postprocessors;

@@ -21,6 +21,12 @@ namespace dyncontact
     /// TimerOutput's sections: wall time (s) and number of calls.
     std::map<std::string, double> section_wall_times;
     std::map<std::string, double> section_calls;
+    /// 'Time step control = adaptive': events located, steps repeated
+    /// because of the error estimate, step matrices S built.
+    bool         adaptive_time_steps = false;
+    unsigned int located_events      = 0;
+    unsigned int repeated_steps      = 0;
+    unsigned int step_matrices       = 0;
   };
 
   /**

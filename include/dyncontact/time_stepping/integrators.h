@@ -32,6 +32,9 @@ namespace dyncontact
     /// ||udot^{n+1} - udot_pred^{n+1}||_M (N-CS++), resp. the size of the
     /// predictor's correction for N-CS; zero for N-CI.
     double velocity_correction = 0.;
+    /// The adaptive step control's error estimate eta of the step (0 with
+    /// fixed tau; StepSizeControl).
+    double error_estimate = 0.;
 
     /// Whether both constrained problems of the step converged.
     bool

@@ -15,7 +15,10 @@ namespace dyncontact
    *
    * Event location. The complementarity of a contact row changes sign
    * inside a step when the row comes into contact (gap g_p - (C u)_p from
-   * > 0 to 0) or is released (force from > 0 to 0). event_fraction()
+   * > 0 to 0) or is released (force from > 0 to 0). Located are the onset
+   * of contact (no row active at t_n) and the separation (no row active at
+   * the trial's end), not each node of a contact zone that grows or
+   * shrinks. event_fraction()
    * interpolates linearly between the start of the step and its trial end:
    * for a new contact the constraint value c_p = (C u - g)_p of u^n and of
    * the constant-velocity prediction u^n + tau udot^n (or, without an
@@ -94,6 +97,11 @@ namespace dyncontact
     void
     load(const std::map<std::string, std::string> &state,
          const VectorType                         &acceleration);
+
+    /// Steps shortened to a located event, and steps repeated because
+    /// their estimate exceeded the tolerance (kept in checkpoints).
+    unsigned int located_events = 0;
+    unsigned int repeated_steps = 0;
 
   private:
     VectorType   acceleration;
