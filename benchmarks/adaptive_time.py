@@ -23,11 +23,13 @@ runs: tau = h/2c over the meshes, resp. over the given steps) to its own.
 Writes doc/adaptive_time_<prm name>.png if matplotlib is there.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/adaptive_time.py [build/dyncontact] [prm] [cells or taus]
-        [tolerances]
+        [tolerances] [Subsection/Entry=value ...]
+(each Subsection/Entry=value is added to every run's input)
 e.g. benchmarks/adaptive_time.py build/dyncontact prm/bar_impact.prm \\
          160,320 0.01,0.003,0.001
      benchmarks/adaptive_time.py build/dyncontact prm/hertz_drop.prm \\
-         0.02,0.01,0.005 0.01,0.003,0.001"""
+         0.02,0.01,0.005 0.01,0.003,0.001 "Mesh/Initial global refinements=3"
+"""
 import csv
 import math
 import os
@@ -41,6 +43,11 @@ sizes = [float(x) for x in (sys.argv[3] if len(sys.argv) > 3 else "160,320").spl
 tols = [float(x) for x in (sys.argv[4] if len(sys.argv) > 4 else "0.01,0.003,0.001").split(",")]
 problem = os.path.splitext(os.path.basename(base_file))[0]
 base = open(base_file).read()
+for setting in sys.argv[5:]:
+    path, value = setting.split("=", 1)
+    *subsections, name = path.split("/")
+    base += "".join("subsection %s\n" % x for x in subsections)
+    base += "  set %s = %s\n" % (name, value) + "end\n" * len(subsections)
 is_bar = re.search(r"(?m)^\s*set Cells along length\s*=", base) is not None
 g0 = 0.1037
 os.makedirs("results-adaptive-time", exist_ok=True)

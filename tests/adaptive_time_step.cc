@@ -15,15 +15,43 @@
 //   built lies between the number of distinct tau of the accepted steps
 //   and that plus the repeated steps, and is below 1 + the number of
 //   changes of tau (which a rebuild at every change would need).
+// - N-CS++: the running sum of meas Gamma* (eq. 40) is the sum of the
+//   steps' measures.
+// On prm/hertz_drop.prm (to 0.6 s, adaptive from tau = 0.01 s), where the
+// contact zone grows node by node: 'Event location = onset and separation'
+// shortens at most two steps (the onset, which N-CS++'s look-ahead takes in
+// two), 'every row' one per node that comes into contact (more than 5),
+// and both keep the energy statement.
 // And a checkpointed adaptive run resumed from half time gives the same
 // statistics as the uninterrupted one (tau levels and the estimator's
 // history are in the checkpoint).
 
 #include <fstream>
+#include <iterator>
 #include <set>
 
 #include "tests.h"
 
+
+namespace
+{
+  /// The number before @p what in the summary's "time steps:" line of
+  /// @p directory (-1 if none).
+  int
+  summary_count(const std::string &directory, const std::string &what)
+  {
+    std::ifstream file(directory + "/summary.txt");
+    std::string   line, text;
+    while (std::getline(file, line))
+      if (line.rfind("time steps:", 0) == 0)
+        text = line;
+    const auto end = text.find(what);
+    if (end == std::string::npos)
+      return -1;
+    const auto begin = text.rfind(' ', end - 1);
+    return std::stoi(text.substr(begin + 1, end - begin - 1));
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -80,6 +108,16 @@ main(int argc, char **argv)
             << check(largest_balance_increase(s) <= 1e-9 * energy0) << "\n";
       if (scheme == "N-CS++")
         {
+          const auto measure = s.column("critical_measure"),
+                     sum     = s.column("critical_measure_sum");
+          double running = 0., deviation = 0.;
+          for (unsigned int i = 0; i < measure.size(); ++i)
+            {
+              running += measure[i];
+              deviation = std::max(deviation, std::abs(running - sum[i]));
+            }
+          log() << "  sum of meas Gamma* over the steps as recorded: "
+                << check(deviation < 1e-12 && running > 0.) << "\n";
           double normal_velocity = 0.;
           for (const double v : s.column("max_active_normal_velocity"))
             normal_velocity = std::max(normal_velocity, v);
@@ -106,22 +144,11 @@ main(int argc, char **argv)
             << check(grew) << "\n";
 
       // the summary's counts
-      std::ifstream file("output-" + scheme + "-40/summary.txt");
-      std::string   line, text;
-      while (std::getline(file, line))
-        if (line.rfind("time steps:", 0) == 0)
-          text = line;
-      auto count_before = [&](const std::string &what) {
-        const auto end   = text.find(what);
-        auto       begin = text.rfind(' ', end - 2);
-        return end == std::string::npos ?
-                 -1 :
-                 std::stoi(text.substr(begin + 1, end - begin - 1));
-      };
-      const int        built    = count_before(" step matrices S built");
-      const int        repeated = count_before(" steps repeated");
-      std::set<double> distinct(dt.begin() + 1, dt.end());
-      unsigned int     changes = 0;
+      const std::string dir      = "output-" + scheme + "-40";
+      const int         built    = summary_count(dir, " step matrices S built");
+      const int         repeated = summary_count(dir, " steps repeated");
+      std::set<double>  distinct(dt.begin() + 1, dt.end());
+      unsigned int      changes = 0;
       for (unsigned int i = 2; i < dt.size(); ++i)
         changes += (dt[i] != dt[i - 1]);
       std::cout << "  S built " << built << ", distinct tau " << distinct.size()
@@ -133,6 +160,41 @@ main(int argc, char **argv)
                      built <= int(changes))
             << "\n";
     }
+
+  // a contact zone that grows node by node: which events are located
+  {
+    std::ifstream     file(std::string(DYNCONTACT_PRM_DIR) + "/hertz_drop.prm");
+    const std::string base((std::istreambuf_iterator<char>(file)),
+                           std::istreambuf_iterator<char>());
+    for (const std::string location : {"onset and separation", "every row"})
+      {
+        const std::string dir = "output-hertz-" + location.substr(0, 5);
+        const Statistics  s =
+          run(base + "set Output directory = " + dir +
+              "\nsubsection Output\n  set Write vtu = false\nend\n"
+              "subsection Time integration\n  set End time = 0.6\n"
+              "  set Time step control = adaptive\n"
+              "  set Minimum time step = 0.00125\n"
+              "  set Maximum time step = 0.08\n"
+              "  set Time step tolerance = 0.003\n"
+              "  set Event location = " +
+              location + "\nend\n");
+        const int located =
+          summary_count(dir, " steps shortened to a contact event");
+        std::cout << "Hertz drop, " << location << ": " << located
+                  << " events located, " << s.rows.size() - 1 << " steps"
+                  << std::endl;
+        log() << "Hertz drop, Event location = " << location << ": "
+              << (location == "every row" ? "more than 5 steps shortened: " :
+                                            "at most 2 steps shortened: ")
+              << check(location == "every row" ? located > 5 :
+                                                 located >= 1 && located <= 2)
+              << "; energy_balance grows by at most 1e-9 of its scale: "
+              << check(largest_balance_increase(s) <=
+                       1e-9 * s.column("energy_total")[0])
+              << "\n";
+      }
+  }
 
   // resumed from a checkpoint at half time: the same statistics
   auto prm = [&](const std::string &run, const double end, const bool resume) {

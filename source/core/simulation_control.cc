@@ -53,6 +53,16 @@ namespace dyncontact
       "contact (or release one) is shortened to end at the predicted "
       "moment of that event, and the last step ends at End time. Not used "
       "by the static scheme.");
+    prm.declare_entry(
+      "Event location",
+      "onset and separation",
+      Patterns::Selection("onset and separation|every row|none"),
+      "Adaptive control: which contact events end a step at their "
+      "predicted moment. onset and separation: the first row to come into "
+      "contact when none is active, and the release when no row stays "
+      "active; every row: each row that comes into contact or is released "
+      "(in a contact zone that grows node by node nearly every step is "
+      "shortened, each with its own step matrix); none.");
     prm.declare_entry("Minimum time step",
                       "0",
                       Patterns::Double(),
@@ -116,6 +126,13 @@ namespace dyncontact
     min_time_step = prm.get_double("Minimum time step");
     max_time_step = prm.get_double("Maximum time step");
     tolerance     = prm.get_double("Time step tolerance");
+    {
+      const std::string location = prm.get("Event location");
+      event_location             = location == "none" ? EventLocation::none :
+                                   location == "every row" ?
+                                                        EventLocation::every_row :
+                                                        EventLocation::onset_and_separation;
+    }
     prm.leave_subsection();
     AssertThrow(std::isfinite(time_step) && time_step > 0.,
                 ExcMessage("Time integration/Time step must be a finite "

@@ -533,19 +533,22 @@ namespace dyncontact
         TimerOutput::Scope t(*timer, "time step control");
         // a contact row that comes into contact or is released inside the
         // step: end the step at the predicted moment (once per step)
-        if (!event_located)
+        if (!event_located && control.get_event_location() !=
+                                SimulationControl::EventLocation::none)
           {
-            const double theta =
-              StepSizeControl::event_fraction(*integrator,
-                                              contact->get_row_operator(),
-                                              start_sets.first,
-                                              settled_rows,
-                                              row_forces,
-                                              u_old,
-                                              udot_old,
-                                              u,
-                                              report,
-                                              comm);
+            const double theta = StepSizeControl::event_fraction(
+              *integrator,
+              contact->get_row_operator(),
+              start_sets.first,
+              settled_rows,
+              row_forces,
+              u_old,
+              udot_old,
+              u,
+              report,
+              control.get_event_location() ==
+                SimulationControl::EventLocation::every_row,
+              comm);
             if (theta < 1. - 1e-2)
               {
                 back_to_start();

@@ -54,7 +54,7 @@ namespace dyncontact
         out << "time steps: adaptive, tau from "
             << *std::min_element(tau.begin() + 1, tau.end()) << " to "
             << *std::max_element(tau.begin() + 1, tau.end()) << " s, "
-            << input.located_events << " contact events located, "
+            << input.located_events << " steps shortened to a contact event, "
             << input.repeated_steps
             << " steps repeated for the error estimate, " << input.step_matrices
             << " step matrices S built\n";

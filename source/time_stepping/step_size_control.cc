@@ -20,6 +20,7 @@ namespace dyncontact
                                   const VectorType          &udot_old,
                                   const VectorType          &u,
                                   const StepReport          &trial,
+                                  const bool                 every_row,
                                   const MPI_Comm             comm)
   {
     // events in the first hundredth of the step are not located: the step
@@ -40,8 +41,10 @@ namespace dyncontact
         any_before = any_before || active_before[p];
         any_after  = any_after || trial.active[p];
       }
-    const bool onset      = !Utilities::MPI::logical_or(any_before, comm);
-    const bool separation = !Utilities::MPI::logical_or(any_after, comm);
+    const bool onset =
+      every_row || !Utilities::MPI::logical_or(any_before, comm);
+    const bool separation =
+      every_row || !Utilities::MPI::logical_or(any_after, comm);
     // a row comes into contact if the trial's displacement step or its
     // projection holds it and it was free at t_n
     auto comes_into_contact = [&](const std::size_t p) {

@@ -126,6 +126,20 @@ namespace dyncontact
       return max_time_step;
     }
 
+    /// Which contact events the adaptive control locates.
+    enum class EventLocation
+    {
+      none,
+      onset_and_separation,
+      every_row
+    };
+
+    EventLocation
+    get_event_location() const
+    {
+      return event_location;
+    }
+
     /// The tolerance of the error estimate (adaptive control).
     double
     get_tolerance() const
@@ -174,17 +188,18 @@ namespace dyncontact
     const MPI_Comm comm;
 
     // parameters
-    double       time_step            = 0.0125;
-    double       end_time             = 2.5;
-    bool         time_step_adaptation = false;
-    double       output_interval      = 0.05;
-    unsigned int checkpoint_steps     = 0;
-    double       checkpoint_minutes   = 0.;
-    bool         is_static            = false;
-    bool         adaptive             = false;
-    double       min_time_step        = 0.;
-    double       max_time_step        = 0.;
-    double       tolerance            = 1e-2;
+    double        time_step            = 0.0125;
+    double        end_time             = 2.5;
+    bool          time_step_adaptation = false;
+    double        output_interval      = 0.05;
+    unsigned int  checkpoint_steps     = 0;
+    double        checkpoint_minutes   = 0.;
+    bool          is_static            = false;
+    bool          adaptive             = false;
+    double        min_time_step        = 0.;
+    double        max_time_step        = 0.;
+    double        tolerance            = 1e-2;
+    EventLocation event_location       = EventLocation::onset_and_separation;
 
     /// t = t_base + k tau from here on (after a change of tau)
     void

@@ -15,10 +15,11 @@ namespace dyncontact
    *
    * Event location. The complementarity of a contact row changes sign
    * inside a step when the row comes into contact (gap g_p - (C u)_p from
-   * > 0 to 0) or is released (force from > 0 to 0). Located are the onset
-   * of contact (no row active at t_n) and the separation (no row active at
-   * the trial's end), not each node of a contact zone that grows or
-   * shrinks. event_fraction()
+   * > 0 to 0) or is released (force from > 0 to 0). Located are, with
+   * @p every_row false, the onset of contact (no row active at t_n) and
+   * the separation (no row active at the trial's end), not each node of a
+   * contact zone that grows or shrinks; with @p every_row true each row's
+   * event. event_fraction()
    * interpolates linearly between the start of the step and its trial end:
    * for a new contact the constraint value c_p = (C u - g)_p of u^n and of
    * the constant-velocity prediction u^n + tau udot^n (or, without an
@@ -55,6 +56,7 @@ namespace dyncontact
                    const VectorType          &udot_old,
                    const VectorType          &u,
                    const StepReport          &trial,
+                   const bool                 every_row,
                    const MPI_Comm             comm);
 
     /// eta of the step from @p udot_old to @p udot with @p tau (0 for the
