@@ -150,30 +150,33 @@ namespace dyncontact
       min_time_step = time_step / 64.;
     if (max_time_step == 0.)
       max_time_step = time_step;
-    AssertThrow(std::isfinite(min_time_step) && min_time_step > 0. &&
-                  min_time_step <= time_step,
-                ExcMessage("Time integration/Minimum time step must be a "
-                           "finite number in (0, Time step = " +
-                           number(time_step) +
-                           "] (s), or 0 for Time step / "
-                           "64; got " +
-                           number(min_time_step) + "."));
-    AssertThrow(std::isfinite(max_time_step) && max_time_step >= time_step,
-                ExcMessage("Time integration/Maximum time step must be a "
-                           "finite number >= Time step = " +
-                           number(time_step) +
-                           " (s), or 0 for Time step; "
-                           "got " +
-                           number(max_time_step) + "."));
-    AssertThrow(std::isfinite(tolerance) && tolerance > 0.,
-                ExcMessage("Time integration/Time step tolerance must be a "
-                           "finite number > 0; got " +
-                           number(tolerance) + "."));
-    AssertThrow(!adaptive || end_time / min_time_step < 1e9,
-                ExcMessage("Time integration: End time / Minimum time step "
-                           "= " +
-                           number(end_time / min_time_step) +
-                           " steps; at most 1e9 are allowed."));
+    // the adaptive control's parameters matter only with it
+    if (adaptive)
+      {
+        AssertThrow(std::isfinite(min_time_step) && min_time_step > 0. &&
+                      min_time_step <= time_step,
+                    ExcMessage("Time integration/Minimum time step must be a "
+                               "finite number in (0, Time step = " +
+                               number(time_step) +
+                               "] (s), or 0 for Time step / 64; got " +
+                               number(min_time_step) + "."));
+        AssertThrow(std::isfinite(max_time_step) && max_time_step >= time_step,
+                    ExcMessage("Time integration/Maximum time step must be a "
+                               "finite number >= Time step = " +
+                               number(time_step) +
+                               " (s), or 0 for Time step; got " +
+                               number(max_time_step) + "."));
+        AssertThrow(std::isfinite(tolerance) && tolerance > 0.,
+                    ExcMessage("Time integration/Time step tolerance must be "
+                               "a finite number > 0; got " +
+                               number(tolerance) + "."));
+        AssertThrow(end_time / min_time_step < 1e9,
+                    ExcMessage("Time integration: End time / Minimum time "
+                               "step = " +
+                               number(end_time / min_time_step) +
+                               " steps; at most 1e9 are allowed: raise "
+                               "Time integration/Minimum time step."));
+      }
 
     prm.enter_subsection("Output");
     output_interval = prm.get_double("Output interval");

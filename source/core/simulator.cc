@@ -336,6 +336,10 @@ namespace dyncontact
     if (control.is_adaptive())
       {
         step_size_control->load(state, acceleration);
+        if (state.count("step_matrices_built"))
+          // those of the run before the checkpoint; make_integrator()
+          // above built one more, which counts
+          n_step_matrices = std::stoul(state.at("step_matrices_built"));
         const ContactRows &rows = contact->get_rows();
         for (unsigned int p = 0; p < rows.size(); ++p)
           settled_rows[p] =
@@ -443,6 +447,8 @@ namespace dyncontact
     mesh_adaptor->save(state);
     vtu_writer->save(state);
     step_size_control->save(state);
+    state["step_matrices_built"] = std::to_string(
+      n_step_matrices + integrator->get_operators().n_step_matrices_built);
     checkpoints.finish(dir, state);
     return dir;
   }
@@ -549,7 +555,9 @@ namespace dyncontact
               control.get_event_location() ==
                 SimulationControl::EventLocation::every_row,
               comm);
-            if (theta < 1. - 1e-2)
+            // not below the Minimum time step
+            if (theta < 1. - 1e-2 && theta * control.get_timestep() >=
+                                       control.get_minimum_timestep())
               {
                 back_to_start();
                 control.shorten(theta * control.get_timestep());

@@ -65,10 +65,18 @@ namespace dyncontact
         const auto           rate      = row_operator.apply(udot_old);
         const auto           after     = row_operator.constraint_values(u);
         const StepOperators &operators = integrator.get_operators();
+        // gaps below round-off of the problem's lengths (a row that a
+        // located step left touching) locate nothing: their ratios would
+        // be ratios of round-off, different on different numbers of ranks
+        double length = 0.;
+        for (std::size_t p = 0; known && p < n; ++p)
+          length = std::max(
+            {length, std::abs(rows.rows[p].gap), tau * std::abs(rate[p])});
+        const double touching = 1e-9 * Utilities::MPI::max(length, comm);
         for (std::size_t p = 0; known && p < n; ++p)
           {
             double theta = 2.;
-            if (comes_into_contact(p) && before[p] < 0.)
+            if (comes_into_contact(p) && before[p] < -touching)
               {
                 if (rate[p] > 0.)
                   // c_p(t) = c_p(t_n) + (t - t_n) (C udot^n)_p reaches 0;
@@ -81,11 +89,11 @@ namespace dyncontact
                     const double end =
                       trial.multipliers[p] / operators.step_matrix_diagonal(
                                                rows.rows[p].eliminated_dof());
-                    if (end > 0.)
+                    if (end > touching)
                       theta = -before[p] / (end - before[p]);
                   }
               }
-            else if (is_released(p) && after[p] < 0.)
+            else if (is_released(p) && after[p] < -touching)
               {
                 // released: the force from > 0 at t_n to the -2/tau^2 S_ee
                 // gap_p that the trial's opened gap stands for
