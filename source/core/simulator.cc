@@ -491,7 +491,7 @@ namespace dyncontact
 
 
   template <int dim>
-  void
+  bool
   Simulator<dim>::take_step()
   {
     u_old    = u;
@@ -534,7 +534,7 @@ namespace dyncontact
             continue;
           }
         if (!control.is_adaptive())
-          return;
+          return false;
 
         TimerOutput::Scope t(*timer, "time step control");
         // a contact row that comes into contact or is released inside the
@@ -578,13 +578,8 @@ namespace dyncontact
             continue;
           }
         report.error_estimate = eta;
-        const bool may_grow =
-          step_size_control->accept(integrator->get_operators(),
-                                    udot_old,
-                                    udot,
-                                    control.get_timestep(),
-                                    eta,
-                                    control.get_tolerance());
+        const bool may_grow   = step_size_control->accept(
+          udot_old, udot, control.get_timestep(), eta, control.get_tolerance());
         row_forces.resize(report.active.size());
         for (unsigned int p = 0; p < row_forces.size(); ++p)
           {
@@ -592,8 +587,7 @@ namespace dyncontact
             settled_rows[p] = (report.active[p] == start_sets.first[p]);
           }
         // grows after the step is recorded (control.advance() first)
-        grow_after_step = may_grow && !control.step_is_shortened();
-        return;
+        return may_grow && !control.step_is_shortened();
       }
   }
 
@@ -622,8 +616,8 @@ namespace dyncontact
 
     while (control.keep_going())
       {
-        Timer step_timer;
-        take_step();
+        Timer      step_timer;
+        const bool may_grow = take_step();
         control.advance();
         step_timer.stop();
         step_wall_time = step_timer.wall_time();
@@ -641,9 +635,8 @@ namespace dyncontact
           report.displacement_solve.iterations,
           report.displacement_solve.linear_iterations +
             report.projection_solve.linear_iterations);
-        if (grow_after_step)
+        if (may_grow)
           control.grow();
-        grow_after_step = false;
         if (vtu_writer->is_enabled() && control.output_due())
           {
             vtu_writer->write(control.get_time());

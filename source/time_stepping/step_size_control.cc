@@ -121,13 +121,14 @@ namespace dyncontact
   StepSizeControl::estimate(const StepOperators &operators,
                             const VectorType    &udot_old,
                             const VectorType    &udot,
-                            const double         tau) const
+                            const double         tau)
   {
+    velocity_norms[0] = operators.mass_norm(udot_old);
+    velocity_norms[1] = operators.mass_norm(udot);
     if (!has_history)
       return 0.;
-    const double scale = std::max({velocity_scale,
-                                   operators.mass_norm(udot),
-                                   operators.mass_norm(udot_old)});
+    const double scale =
+      std::max({velocity_scale, velocity_norms[1], velocity_norms[0]});
     if (scale == 0.)
       return 0.;
     // a_n - a_{n-1}
@@ -142,22 +143,20 @@ namespace dyncontact
 
 
   bool
-  StepSizeControl::accept(const StepOperators &operators,
-                          const VectorType    &udot_old,
-                          const VectorType    &udot,
-                          const double         tau,
-                          const double         eta,
-                          const double         tolerance)
+  StepSizeControl::accept(const VectorType &udot_old,
+                          const VectorType &udot,
+                          const double      tau,
+                          const double      eta,
+                          const double      tolerance)
   {
     n_small      = (has_history && eta < tolerance / 8.) ? n_small + 1 : 0;
     acceleration = udot;
     acceleration -= udot_old;
     acceleration /= tau;
-    previous_tau   = tau;
-    velocity_scale = std::max({velocity_scale,
-                               operators.mass_norm(udot),
-                               operators.mass_norm(udot_old)});
-    has_history    = true;
+    previous_tau = tau;
+    velocity_scale =
+      std::max({velocity_scale, velocity_norms[1], velocity_norms[0]});
+    has_history = true;
     if (n_small >= 2)
       {
         n_small = 0;

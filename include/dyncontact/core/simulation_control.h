@@ -107,13 +107,6 @@ namespace dyncontact
       return adaptive;
     }
 
-    /// The level tau returns to after a shortened step.
-    double
-    get_level_timestep() const
-    {
-      return tau_level;
-    }
-
     double
     get_minimum_timestep() const
     {

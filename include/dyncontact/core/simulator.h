@@ -80,8 +80,9 @@ namespace dyncontact
     check_inertia();
     /// One step from (u, udot) = (u_old, udot_old), repeated as the time
     /// step control asks (a failed solve, a located contact event, an error
-    /// estimate above the tolerance); returns once a step is accepted.
-    void
+    /// estimate above the tolerance); returns once a step is accepted,
+    /// with whether tau may grow after it.
+    bool
     take_step();
     /// The initial state and its statistics row (a new run).
     void
@@ -141,7 +142,6 @@ namespace dyncontact
     std::vector<double>              row_forces;
     /// per row: whether the last accepted step left it in its state
     std::vector<char> settled_rows;
-    bool              grow_after_step = false;
     /// step matrices S built by the integrators of earlier meshes
     unsigned int n_step_matrices = 0;
 

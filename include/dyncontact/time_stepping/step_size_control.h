@@ -60,23 +60,23 @@ namespace dyncontact
                    const MPI_Comm             comm);
 
     /// eta of the step from @p udot_old to @p udot with @p tau (0 for the
-    /// first step, after a mesh change or a resume without history).
+    /// first step, after a mesh change or a resume without history); keeps
+    /// the velocities' norms for accept().
     double
     estimate(const StepOperators &operators,
              const VectorType    &udot_old,
              const VectorType    &udot,
-             const double         tau) const;
+             const double         tau);
 
-    /// An accepted step with estimate @p eta: keeps its mean acceleration.
-    /// Returns whether tau may grow (the last two estimates below
-    /// @p tolerance / 8).
+    /// The step just estimated is accepted with estimate @p eta: keeps its
+    /// mean acceleration. Returns whether tau may grow (the last two
+    /// estimates below @p tolerance / 8).
     bool
-    accept(const StepOperators &operators,
-           const VectorType    &udot_old,
-           const VectorType    &udot,
-           const double         tau,
-           const double         eta,
-           const double         tolerance);
+    accept(const VectorType &udot_old,
+           const VectorType &udot,
+           const double      tau,
+           const double      eta,
+           const double      tolerance);
 
     /// Forgets the last acceleration (the mesh changed).
     void
@@ -106,11 +106,13 @@ namespace dyncontact
     unsigned int repeated_steps = 0;
 
   private:
-    VectorType   acceleration;
-    double       previous_tau   = 0.;
-    double       velocity_scale = 0.;
-    bool         has_history    = false;
-    unsigned int n_small        = 0;
+    VectorType acceleration;
+    /// ||udot_old||_M and ||udot||_M of the step last estimated
+    double       velocity_norms[2] = {0., 0.};
+    double       previous_tau      = 0.;
+    double       velocity_scale    = 0.;
+    bool         has_history       = false;
+    unsigned int n_small           = 0;
   };
 } // namespace dyncontact
 
