@@ -7,12 +7,16 @@ summary.txt (timer sections) and statistics.tsv (step wall times, CG
 iterations) and /usr/bin/time (largest resident set size) it prints one
 table: DoFs, set-up (DoFs, constraints, sparsity, contact rows, solver
 set-up), assembly, the wall time of a free and of a contact step, CG
-iterations per step, the shares of diagnostics and output in the time
-loop, one VTU write in steps, and RSS per DoF; then the exponents of a
-power-law fit against DoFs, and the 1-vs-2-rank ratio of the time loop at
-the size nearest to 2.6e5 DoFs.
+iterations per contact step, the every-step diagnostics per step in % of
+the mean of a free and a contact step, the shares of those diagnostics, of
+the sampled error norms and of output in the time loop, one VTU write in
+steps, and RSS per DoF; then the exponents of a power-law fit against
+DoFs, and the 1-vs-2-rank ratio of the time loop at the size nearest to
+2.6e5 DoFs. With --tau T every size steps with the same tau = T (AMG
+at fixed tau: the CG iterations should not grow with the DoFs), and no
+2-rank run is made.
 Usage, from the repository's top folder after tools/setup.sh:
-    benchmarks/scaling.py [build/dyncontact] [N1 N2 ...]"""
+    benchmarks/scaling.py [build/dyncontact] [--tau T] [N1 N2 ...]"""
 import csv
 import math
 import os
@@ -20,16 +24,23 @@ import re
 import subprocess
 import sys
 
-executable = sys.argv[1] if len(sys.argv) > 1 else "build/dyncontact"
-sizes = [int(n) for n in sys.argv[2:]] or [52, 72, 100, 128, 160, 200]
+arguments = sys.argv[1:]
+fixed_tau = None
+if "--tau" in arguments:
+    k = arguments.index("--tau")
+    fixed_tau = float(arguments[k + 1])
+    del arguments[k:k + 2]
+executable = arguments[0] if arguments else "build/dyncontact"
+sizes = [int(n) for n in arguments[1:]] or [52, 72, 100, 128, 160, 200]
 os.makedirs("results-scaling", exist_ok=True)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
            OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
 def run(cells, ranks=1):
-    name = "bar3d-%d-np%d" % (cells, ranks)
-    tau = 0.5 / cells
+    name = "bar3d-%d-np%d" % (cells, ranks) + \
+        ("-tau%g" % fixed_tau if fixed_tau else "")
+    tau = fixed_tau or 0.5 / cells
     directory = "results-scaling/" + name
     prm = directory + ".prm"
     with open(prm, "w") as f:
@@ -69,13 +80,18 @@ end
     free = [float(r["step_wall_time"]) for r in rows if float(r["active_nodes"]) == 0]
     contact = [float(r["step_wall_time"]) for r in rows if float(r["active_nodes"]) > 0]
     cg = sum(float(r["linear_iterations"]) for r in rows) / len(rows)
+    cg_contact = [float(r["linear_iterations"]) for r in rows
+                  if float(r["active_nodes"]) > 0]
     dofs = float(rows[-1]["dofs"])
     section = lambda s: sections.get(s, (0.0, 0))[0]
     return dict(dofs=dofs, setup=section("setup") + section("contact rows"),
                 assembly=section("assembly"),
                 free=sum(free) / max(len(free), 1),
                 contact=sum(contact) / max(len(contact), 1), cg=cg,
+                cg_contact=sum(cg_contact) / max(len(cg_contact), 1),
                 diagnostics=section("diagnostics") / loop,
+                diagnostics_per_step=section("diagnostics") / (len(rows) + 1),
+                norms=section("sampled norms") / loop,
                 output=section("output") / loop,
                 write=section("output") / max(sections.get("output", (0, 1))[1], 1),
                 rss=rss, loop=loop)
@@ -90,27 +106,35 @@ def fit(xs, ys):
 
 
 results = []
-print("%9s %8s %8s %8s %8s %6s %7s %7s %9s %8s" %
-      ("DoFs", "set-up", "assembly", "free", "contact", "CG/st",
-       "diagn.", "output", "write/st", "RSS/DoF"))
+print("%9s %8s %8s %8s %8s %7s %8s %7s %7s %7s %9s %8s" %
+      ("DoFs", "set-up", "assembly", "free", "contact", "CG/cst",
+       "diagn/st", "diagn.", "norms", "output", "write/st", "RSS/DoF"))
 for n in sizes:
     r = run(n)
     results.append(r)
     step = 0.5 * (r["free"] + r["contact"])
-    print("%9d %7.2fs %7.2fs %7.3fs %7.3fs %6.1f %6.1f%% %6.1f%% %9.2f %6.2fkB" %
-          (r["dofs"], r["setup"], r["assembly"], r["free"], r["contact"], r["cg"],
-           100 * r["diagnostics"], 100 * r["output"], r["write"] / step,
-           r["rss"] / r["dofs"] / 1e3), flush=True)
+    print("%9d %7.2fs %7.2fs %7.3fs %7.3fs %7.1f %7.1f%% %6.1f%% %6.1f%% "
+          "%6.1f%% %9.2f %6.2fkB" %
+          (r["dofs"], r["setup"], r["assembly"], r["free"], r["contact"],
+           r["cg_contact"], 100 * r["diagnostics_per_step"] / step,
+           100 * r["diagnostics"], 100 * r["norms"], 100 * r["output"],
+           r["write"] / step, r["rss"] / r["dofs"] / 1e3), flush=True)
+if len(results) < 2:
+    sys.exit(0)
 dofs = [r["dofs"] for r in results]
 print("exponents against DoFs: set-up %.2f, assembly %.2f, free step %.2f, "
-      "contact step %.2f" % (fit(dofs, [r["setup"] for r in results]),
-                             fit(dofs, [r["assembly"] for r in results]),
-                             fit(dofs, [r["free"] for r in results]),
-                             fit(dofs, [r["contact"] for r in results])))
+      "contact step %.2f, CG per contact step %.2f" %
+      (fit(dofs, [r["setup"] for r in results]),
+       fit(dofs, [r["assembly"] for r in results]),
+       fit(dofs, [r["free"] for r in results]),
+       fit(dofs, [r["contact"] for r in results]),
+       fit(dofs, [r["cg_contact"] for r in results])))
 last = results[-1]
 print("at %d DoFs: set-up + assembly = %.1f steps" %
       (last["dofs"], (last["setup"] + last["assembly"]) /
        (0.5 * (last["free"] + last["contact"]))))
+if fixed_tau:
+    sys.exit(0)
 nearest = min(sizes, key=lambda n: abs(results[sizes.index(n)]["dofs"] - 2.6e5))
 one = results[sizes.index(nearest)]
 two = run(nearest, 2)

@@ -46,7 +46,15 @@ check(const std::string                      &name,
   rows.rows = row_list;
   ActiveSetSolver solver(parameters, MPI_COMM_WORLD);
   solver.reinit(all(n), all(n), no_constraints(n), rows);
-  solver.set_matrix(H, diagonal);
+  // a diagonal H as its diagonal (a lumped mass), otherwise the matrix
+  std::vector<double> H_diagonal;
+  for (unsigned int i = 0; i < n; ++i)
+    H_diagonal.push_back(H_entries[i][i]);
+  const VectorType d = make_vector(H_diagonal);
+  if (diagonal)
+    solver.set_diagonal_matrix(d);
+  else
+    solver.set_matrix(H);
   const VectorType    r = make_vector(r_values);
   VectorType          v(r);
   std::vector<double> mu;
@@ -159,7 +167,7 @@ main(int argc, char **argv)
     rows.rows = {make_row({0}, {1.}, 1, 1.)};
     ActiveSetSolver solver(parameters, MPI_COMM_WORLD);
     solver.reinit(all(n), all(n), no_constraints(n), rows);
-    solver.set_matrix(H, false);
+    solver.set_matrix(H);
     const VectorType    r = make_vector(std::vector<double>(n, -1.));
     VectorType          v(r);
     std::vector<char>   active = {1};

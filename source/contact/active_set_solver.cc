@@ -41,6 +41,12 @@ namespace dyncontact
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     ghosts.add_indices(touched.begin(), touched.end());
     ghosts.compress();
+    // apply() reads only the rows' own DoFs: a ghosted vector with just
+    // those, made once per mesh
+    IndexSet row_dofs(owned.size());
+    row_dofs.add_indices(touched.begin(), touched.end());
+    row_dofs.compress();
+    ghosted_row_dofs.reinit(owned, row_dofs, comm);
     contact_rows = &rows;
   }
 
@@ -49,12 +55,11 @@ namespace dyncontact
   std::vector<double>
   ContactRowOperator::apply(const VectorType &v) const
   {
-    VectorType ghosted(locally_owned, ghosts, comm);
-    ghosted = v;
+    ghosted_row_dofs = v;
     std::vector<double> values(size(), 0.);
     for (unsigned int p = 0; p < values.size(); ++p)
       for (const auto &entry : contact_rows->rows[p].entries)
-        values[p] += entry.second * ghosted(entry.first);
+        values[p] += entry.second * ghosted_row_dofs(entry.first);
     return values;
   }
 
@@ -176,17 +181,51 @@ namespace dyncontact
 
   void
   ActiveSetSolver::set_matrix(const MatrixType &matrix,
-                              const bool        is_diagonal,
                               const MatrixType *preconditioner_matrix)
   {
-    H             = &matrix;
-    H_is_diagonal = is_diagonal;
-
+    H = &matrix;
     diagonal.reinit(locally_owned, comm);
     for (const auto i : locally_owned)
       diagonal(i) = matrix.diag_element(i);
     diagonal.compress(VectorOperation::insert);
+    inverse_diagonal.clear();
+    set_diagonal_data(false);
 
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = false;
+    data.smoother_sweeps       = 2;
+    // no dropping: S = M + tau^2/4 A + tau/2 B is dominated by its
+    // diagonal at tau ~ h/c, and with a threshold of 0.02 ML dropped
+    // every coupling and fell back to one level, a direct solve of the
+    // whole matrix (3D bar, 5e4 DoFs: 10 s set-up instead of 0.3 s)
+    data.aggregation_threshold = 0.;
+    data.constant_modes        = constant_modes;
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(preconditioner_matrix ? *preconditioner_matrix : matrix,
+                    data);
+  }
+
+
+
+  void
+  ActiveSetSolver::set_diagonal_matrix(const VectorType &d)
+  {
+    H        = nullptr;
+    diagonal = d;
+    // Jacobi: x_i / H_ii as x_i * (1 / H_ii)
+    inverse_diagonal = d;
+    for (auto &value : inverse_diagonal)
+      value = 1. / value;
+    amg.reset();
+    set_diagonal_data(true);
+  }
+
+
+
+  void
+  ActiveSetSolver::set_diagonal_data(const bool is_diagonal)
+  {
     // the scaling of the active-set criterion for each row: H's diagonal at
     // the eliminated DoF (owned, as the row's slave node)
     row_scaling.assign(rows->size(), 0.);
@@ -212,29 +251,19 @@ namespace dyncontact
       if (!line.entries.empty())
         pointwise = false;
     pointwise = (Utilities::MPI::min(pointwise ? 1 : 0, comm) == 1);
+  }
 
-    amg.reset();
-    jacobi.reset();
-    if (is_diagonal)
-      {
-        jacobi = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
-        jacobi->initialize(matrix);
-      }
+
+
+  void
+  ActiveSetSolver::vmult_H(VectorType &y, const VectorType &x) const
+  {
+    if (H != nullptr)
+      H->vmult(y, x);
     else
       {
-        TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic              = true;
-        data.higher_order_elements = false;
-        data.smoother_sweeps       = 2;
-        // no dropping: S = M + tau^2/4 A + tau/2 B is dominated by its
-        // diagonal at tau ~ h/c, and with a threshold of 0.02 ML dropped
-        // every coupling and fell back to one level, a direct solve of the
-        // whole matrix (3D bar, 5e4 DoFs: 10 s set-up instead of 0.3 s)
-        data.aggregation_threshold = 0.;
-        data.constant_modes        = constant_modes;
-        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg->initialize(preconditioner_matrix ? *preconditioner_matrix : matrix,
-                        data);
+        y = x;
+        y.scale(diagonal);
       }
   }
 
@@ -305,7 +334,7 @@ namespace dyncontact
   {
     Tx = x;
     homogeneous.distribute(Tx);
-    H->vmult(y, Tx);
+    vmult_H(y, Tx);
     transpose_distribute(homogeneous, y);
     // constrained entries: identity scaled by H's diagonal (they stay zero)
     for (const auto &line : homogeneous.get_lines())
@@ -387,7 +416,7 @@ namespace dyncontact
         constraints.distribute(k);
 
         // b = T^T (r - H k)
-        H->vmult(b, k);
+        vmult_H(b, k);
         b.sadd(-1., 1., r);
         transpose_distribute(homogeneous, b);
 
@@ -425,7 +454,10 @@ namespace dyncontact
             if (solver->amg)
               solver->amg->vmult(dst, src);
             else
-              solver->jacobi->vmult(dst, src);
+              {
+                dst = src;
+                dst.scale(solver->inverse_diagonal);
+              }
             for (const auto &line : homogeneous->get_lines())
               if (solver->locally_owned.is_element(line.index))
                 dst(line.index) = 0.;
@@ -451,7 +483,7 @@ namespace dyncontact
         constraints.distribute(v);
 
         // multipliers from the residual r - H v at the slave nodes
-        H->vmult(residual, v);
+        vmult_H(residual, v);
         residual.sadd(-1., 1., r);
         {
           VectorType ghosted(locally_owned, row_operator.ghost_set(), comm);

@@ -358,8 +358,8 @@ namespace dyncontact
   void
   Simulator<dim>::record_statistics()
   {
+    postprocessors->execute(*timer);
     TimerOutput::Scope t(*timer, "diagnostics");
-    postprocessors->execute();
     // a statistic that is not finite stops the run (nan marks a step
     // without a value in a sampled column)
     const auto &statistics = postprocessors->get_statistics();

@@ -9,7 +9,11 @@
 
 #include <dyncontact/discretization/semi_discrete_system.h>
 
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Vector.h>
+
 #include <algorithm>
+#include <cstring>
 #include <sstream>
 
 namespace dyncontact
@@ -112,8 +116,19 @@ namespace dyncontact
                                                locally_owned,
                                                comm,
                                                locally_relevant);
-    mass_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    // a lumped mass is kept as its diagonal only
+    if (parameters.lumped_mass)
+      {
+        mass_matrix.clear();
+        lumped_mass_diagonal.reinit(locally_owned, comm);
+      }
+    else
+      {
+        mass_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+        lumped_mass_diagonal.clear();
+      }
     stiffness_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    stiffness_product.reinit(nullptr);
     viscous = scene.is_viscous();
     if (viscous)
       viscous_matrix.reinit(locally_owned, locally_owned, dsp, comm);
@@ -167,6 +182,7 @@ namespace dyncontact
       body_component_dofs.assign(
         scene.n_bodies(),
         std::vector<IndexSet>(dim, IndexSet(dof_handler.n_dofs())));
+      owned_dof_slots.assign(locally_owned.n_elements(), 0);
       for (unsigned int b = 0; b < lists.size(); ++b)
         for (unsigned int c = 0; c < dim; ++c)
           {
@@ -174,6 +190,9 @@ namespace dyncontact
             std::sort(list.begin(), list.end());
             list.erase(std::unique(list.begin(), list.end()), list.end());
             body_component_dofs[b][c].add_indices(list.begin(), list.end());
+            for (const auto dof : list)
+              owned_dof_slots[locally_owned.index_within_set(dof)] =
+                b * dim + c;
             body_component_dofs[b][c].compress();
           }
     }
@@ -254,6 +273,7 @@ namespace dyncontact
     FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
     FullMatrix<double>  cell_stiffness(dofs_per_cell, dofs_per_cell);
     FullMatrix<double>  cell_viscous(dofs_per_cell, dofs_per_cell);
+    Vector<double>      cell_lumped_mass(dofs_per_cell);
     Vector<double>      cell_load(dofs_per_cell);
     Vector<double>      cell_boundary_weights(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
@@ -313,9 +333,13 @@ namespace dyncontact
                     fe_values[displacement].value(i, q) * body_force * JxW;
                 }
             }
+          // (lumped: the element matrix is diagonal, only its diagonal is
+          // computed)
           for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              for (unsigned int j = (parameters.lumped_mass ? i : 0);
+                   j < (parameters.lumped_mass ? i + 1 : dofs_per_cell);
+                   ++j)
                 cell_mass(i, j) += rho *
                                    (mass_values[displacement].value(i, q) *
                                     mass_values[displacement].value(j, q)) *
@@ -354,7 +378,14 @@ namespace dyncontact
               }
 
           cell->get_dof_indices(dof_indices);
-          mass_matrix.add(dof_indices, cell_mass);
+          if (parameters.lumped_mass)
+            {
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_lumped_mass(i) = cell_mass(i, i);
+              lumped_mass_diagonal.add(dof_indices, cell_lumped_mass);
+            }
+          else
+            mass_matrix.add(dof_indices, cell_mass);
           stiffness_matrix.add(dof_indices, cell_stiffness);
           if (viscous)
             viscous_matrix.add(dof_indices, cell_viscous);
@@ -362,8 +393,12 @@ namespace dyncontact
           boundary_weights.add(dof_indices, cell_boundary_weights);
         }
 
-    mass_matrix.compress(VectorOperation::add);
+    if (parameters.lumped_mass)
+      lumped_mass_diagonal.compress(VectorOperation::add);
+    else
+      mass_matrix.compress(VectorOperation::add);
     stiffness_matrix.compress(VectorOperation::add);
+    stiffness_product.reinit(&stiffness_matrix);
     for (const auto &rank_bad : Utilities::MPI::all_gather(comm, bad_cell))
       if (!rank_bad.empty())
         {
@@ -447,11 +482,10 @@ namespace dyncontact
                                     const VectorType &udot,
                                     VectorType       &M_udot) const
   {
-    mass_matrix.vmult(M_udot, udot);
+    const SystemMatrices system = matrices();
+    system.mass_vmult(M_udot, udot);
     const double kinetic = 0.5 * (M_udot * udot);
-    VectorType   Au(u);
-    stiffness_matrix.vmult(Au, u);
-    return {kinetic, 0.5 * (Au * u) - load * u};
+    return {kinetic, 0.5 * (system.stiffness_vmult(u) * u) - load * u};
   }
 
 
@@ -545,11 +579,96 @@ namespace dyncontact
   SystemMatrices
   SemiDiscreteSystem<dim>::matrices() const
   {
-    return {&mass_matrix,
-            &stiffness_matrix,
-            viscous ? &viscous_matrix : nullptr,
-            &load,
-            parameters.lumped_mass};
+    SystemMatrices system;
+    system.M         = parameters.lumped_mass ? nullptr : &mass_matrix;
+    system.M_lumped  = parameters.lumped_mass ? &lumped_mass_diagonal : nullptr;
+    system.A         = &stiffness_matrix;
+    system.A_product = &stiffness_product;
+    system.B         = viscous ? &viscous_matrix : nullptr;
+    system.f         = &load;
+    system.lumped_mass = parameters.lumped_mass;
+    return system;
+  }
+
+
+
+  void
+  CachedProduct::reinit(const MatrixType *matrix)
+  {
+    this->matrix = matrix;
+    valid        = false;
+  }
+
+
+
+  const VectorType &
+  CachedProduct::vmult(const VectorType &x) const
+  {
+    Assert(matrix != nullptr, ExcInternalError());
+    bool hit = valid &&
+               x_last.locally_owned_elements() == x.locally_owned_elements() &&
+               std::memcmp(x_last.begin(),
+                           x.begin(),
+                           x.locally_owned_size() * sizeof(double)) == 0;
+    hit = (Utilities::MPI::min(hit ? 1 : 0, x.get_mpi_communicator()) == 1);
+    if (!hit)
+      {
+        x_last = x;
+        y_last.reinit(x, true);
+        matrix->vmult(y_last, x);
+        valid = true;
+      }
+    return y_last;
+  }
+
+
+
+  void
+  SystemMatrices::mass_vmult(VectorType &y, const VectorType &x) const
+  {
+    if (M != nullptr)
+      {
+        y.reinit(x, true);
+        M->vmult(y, x);
+      }
+    else
+      {
+        y = x;
+        y.scale(*M_lumped);
+      }
+  }
+
+
+
+  double
+  SystemMatrices::mass_linfty_norm() const
+  {
+    return M != nullptr ? M->linfty_norm() : M_lumped->linfty_norm();
+  }
+
+
+
+  void
+  SystemMatrices::add_mass(MatrixType &matrix, const double factor) const
+  {
+    if (M != nullptr)
+      {
+        matrix.add(factor, *M);
+        return;
+      }
+    // the diagonal of the Epetra matrix, changed in place (deal.II's wrapper
+    // gives only a const view of the matrix it owns)
+    auto &epetra = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
+    Epetra_Vector diagonal(epetra.RowMap());
+    int           error = epetra.ExtractDiagonalCopy(diagonal);
+    if (error == 0)
+      error = diagonal.Update(factor, M_lumped->trilinos_vector(), 1.);
+    if (error == 0)
+      error = epetra.ReplaceDiagonalValues(diagonal);
+    AssertThrow(error == 0,
+                ExcMessage("adding the lumped mass to a matrix's diagonal "
+                           "failed (Epetra error " +
+                           std::to_string(error) + ")"));
   }
 
   template class SemiDiscreteSystem<2>;

@@ -165,7 +165,7 @@ namespace dyncontact
     e.compress(VectorOperation::insert);
     edot.compress(VectorOperation::insert);
     VectorType tmp(e);
-    system.get_mass_matrix().vmult(tmp, edot);
+    system.matrices().mass_vmult(tmp, edot);
     double error2 = 0.5 * (tmp * edot);
     system.get_stiffness_matrix().vmult(tmp, e);
     error2 += 0.5 * (tmp * e);

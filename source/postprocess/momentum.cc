@@ -32,15 +32,16 @@ namespace dyncontact
       {
         const SemiDiscreteSystem<dim> &system   = this->get_system();
         const unsigned int             n_bodies = this->get_scene().n_bodies();
-        VectorType                     M_udot(this->get_solution());
-        system.get_mass_matrix().vmult(M_udot, this->get_velocity());
+        VectorType                     M_udot;
+        system.matrices().mass_vmult(M_udot, this->get_velocity());
 
-        // body_momentum[3 b + d]
-        std::vector<double> body_momentum(3 * n_bodies, 0.);
-        for (unsigned int b = 0; b < n_bodies; ++b)
-          for (unsigned int d = 0; d < dim; ++d)
-            for (const auto i : system.get_body_component_dofs()[b][d])
-              body_momentum[3 * b + d] += M_udot(i);
+        // sums of (M udot)_i over each body's DoFs of each component, in
+        // the order of the DoF numbers
+        std::vector<double>               body_momentum(3 * n_bodies, 0.);
+        const std::vector<unsigned char> &slots  = system.get_owned_dof_slots();
+        const double                     *values = M_udot.begin();
+        for (std::size_t k = 0; k < slots.size(); ++k)
+          body_momentum[3 * (slots[k] / dim) + slots[k] % dim] += values[k];
         Utilities::MPI::sum(body_momentum,
                             this->get_mpi_communicator(),
                             body_momentum);

@@ -38,9 +38,9 @@ namespace dyncontact
       {
         // H = A; AMG gets A + eps M, which stays SPD without Dirichlet data
         preconditioner_matrix.copy_from(*system.A);
-        preconditioner_matrix.add(1e-6 * system.A->linfty_norm() /
-                                    system.M->linfty_norm(),
-                                  *system.M);
+        system.add_mass(preconditioner_matrix,
+                        1e-6 * system.A->linfty_norm() /
+                          system.mass_linfty_norm());
         // start with every row active: the bodies are held by the contact
         displacement_active.assign(rows.size(), 1);
       }
@@ -49,7 +49,10 @@ namespace dyncontact
                              locally_relevant,
                              mesh_constraints,
                              rows);
-    projection_solver.set_matrix(*system.M, system.lumped_mass);
+    if (system.lumped_mass)
+      projection_solver.set_diagonal_matrix(*system.M_lumped);
+    else
+      projection_solver.set_matrix(*system.M);
   }
 
 
@@ -68,22 +71,27 @@ namespace dyncontact
     if (is_static)
       {
         S.copy_from(*system.A);
-        solver.set_matrix(S, false, &preconditioner_matrix);
+        solver.set_matrix(S, &preconditioner_matrix);
       }
     else
       {
         // S = M + tau^2/4 A + tau/2 B, formed from the assembled matrices
-        S.copy_from(*system.M);
-        S.add(tau * tau / 4., *system.A);
+        // (as tau^2/4 A + M: the same sums, also for a lumped M)
+        S.copy_from(*system.A);
+        S *= tau * tau / 4.;
+        system.add_mass(S, 1.);
         if (system.B != nullptr)
           S.add(tau / 2., *system.B);
-        solver.set_matrix(S, false);
+        solver.set_matrix(S);
         // how far the stiffness and viscosity outweigh the mass in S
         double ratio = 1.;
         for (const auto i : locally_owned)
-          if (system.M->diag_element(i) > 0.)
-            ratio =
-              std::max(ratio, S.diag_element(i) / system.M->diag_element(i));
+          {
+            const double M_ii = system.lumped_mass ? (*system.M_lumped)(i) :
+                                                     system.M->diag_element(i);
+            if (M_ii > 0.)
+              ratio = std::max(ratio, S.diag_element(i) / M_ii);
+          }
         step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
       }
     return step_matrix;
@@ -129,12 +137,11 @@ namespace dyncontact
   {
     // r(w) = M w - tau^2/4 A u + tau/2 B u + tau^2/2 f
     const double tau = current->tau;
-    VectorType   tmp(u);
-    system.M->vmult(r, w);
-    system.A->vmult(tmp, u);
-    r.add(-tau * tau / 4., tmp);
+    system.mass_vmult(r, w);
+    r.add(-tau * tau / 4., system.stiffness_vmult(u));
     if (system.B != nullptr)
       {
+        VectorType tmp(u);
         system.B->vmult(tmp, u);
         r.add(tau / 2., tmp);
       }
@@ -160,7 +167,7 @@ namespace dyncontact
   {
     VectorType          r(w);
     std::vector<double> multipliers;
-    system.M->vmult(r, w);
+    system.mass_vmult(r, w);
     v = w;
     report.projection_solve =
       projection_solver.solve(r, v, projection_active, multipliers);
@@ -173,7 +180,7 @@ namespace dyncontact
   StepOperators::mass_norm(const VectorType &x) const
   {
     VectorType Mx(x);
-    system.M->vmult(Mx, x);
+    system.mass_vmult(Mx, x);
     return std::sqrt(Mx * x);
   }
 
@@ -432,6 +439,10 @@ namespace dyncontact
   {
     StepReport report = empty_report();
     scheme.step(operators, u, udot, report);
+    // A u^{n+1}, which the next step's right-hand side needs, now: the
+    // energy after this step reads it from the cache (CachedProduct)
+    if (!scheme.is_static)
+      operators.prepare_next_step(u);
 
     // Gamma*_{h,C} (eq. 40): rows where the projection was active but the
     // displacement step was not

@@ -76,6 +76,8 @@ namespace dyncontact
     IndexSet           locally_owned;
     IndexSet           ghosts;
     const ContactRows *contact_rows = nullptr;
+    /// v with the ghost entries of the rows' DoFs (apply()'s work vector)
+    mutable VectorType ghosted_row_dofs;
   };
 
 
@@ -171,14 +173,19 @@ namespace dyncontact
            const ContactRows               &rows);
 
     /**
-     * Sets H and builds the preconditioner once. If @p is_diagonal, H is a
-     * lumped (diagonal) matrix and Jacobi is used; with rows that only touch
-     * unconstrained slave DoFs the solve is then pointwise.
+     * Sets H and builds its AMG once (of @p preconditioner_matrix if given).
      */
     void
     set_matrix(const MatrixType &H,
-               const bool        is_diagonal,
                const MatrixType *preconditioner_matrix = nullptr);
+
+    /**
+     * Sets H = diag(@p diagonal), a lumped mass (kept as a reference);
+     * Jacobi is used, and with rows that only touch unconstrained slave DoFs
+     * the solve is pointwise.
+     */
+    void
+    set_diagonal_matrix(const VectorType &diagonal);
 
     /// The rigid translations (per component, locally owned DoFs), given to
     /// AMG as near-null-space; call before set_matrix().
@@ -234,21 +241,31 @@ namespace dyncontact
     const ContactRows        *rows = nullptr;
     ContactRowOperator        row_operator;
 
-    const MatrixType *H             = nullptr;
-    bool              H_is_diagonal = false;
-    bool              pointwise     = false;
+    /// H, nullptr if it is diagonal (then given by @p diagonal alone).
+    const MatrixType *H         = nullptr;
+    bool              pointwise = false;
     /// Diagonal of H (owned entries) and its value at each row's
-    /// eliminated DoF (the scaling c of the active-set criterion).
+    /// eliminated DoF (the scaling c of the active-set criterion); the
+    /// inverse of the diagonal for Jacobi (diagonal H only).
     VectorType          diagonal;
+    VectorType          inverse_diagonal;
     std::vector<double> row_scaling;
+
+    /// The part of set_matrix() and set_diagonal_matrix() that only needs
+    /// the diagonal: row scaling and whether the solve is pointwise.
+    void
+    set_diagonal_data(const bool is_diagonal);
+
+    /// y = H x.
+    void
+    vmult_H(VectorType &y, const VectorType &x) const;
 
     /// Work vectors of the condensed operator, made once per mesh: T x, and
     /// the additions of T^T to entries owned elsewhere (writable ghosts).
-    mutable VectorType                                    Tx;
-    mutable VectorType                                    additions;
-    std::vector<std::vector<bool>>                        constant_modes;
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG>    amg;
-    std::unique_ptr<TrilinosWrappers::PreconditionJacobi> jacobi;
+    mutable VectorType                                 Tx;
+    mutable VectorType                                 additions;
+    std::vector<std::vector<bool>>                     constant_modes;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
   };
 } // namespace dyncontact
 

@@ -29,15 +29,66 @@ namespace dyncontact
   using VectorType = TrilinosWrappers::MPI::Vector;
   using MatrixType = TrilinosWrappers::SparseMatrix;
 
-  /// The matrices and the load of the semi-discrete problem that a time
-  /// integrator needs. B is nullptr for an elastic body.
+  /**
+   * y = A x for a sparse matrix A, remembered for the last x: the elastic
+   * energy after a step and the right-hand side of the next step need the
+   * same product. A hit is decided on the bits of x on every rank at once
+   * (one scalar reduction), so that the ranks take part in the same
+   * matrix-vector products.
+   */
+  class CachedProduct
+  {
+  public:
+    /// Forgets the last product; @p matrix from now on.
+    void
+    reinit(const MatrixType *matrix);
+
+    /// A x (the reference stays valid until the next call or reinit()).
+    const VectorType &
+    vmult(const VectorType &x) const;
+
+  private:
+    const MatrixType  *matrix = nullptr;
+    mutable bool       valid  = false;
+    mutable VectorType x_last;
+    mutable VectorType y_last;
+  };
+
+  /**
+   * The matrices and the load of the semi-discrete problem that a time
+   * integrator needs. The mass is either a consistent matrix M or, lumped,
+   * its diagonal M_lumped (no sparse matrix is kept for it). B is nullptr
+   * for an elastic body.
+   */
   struct SystemMatrices
   {
-    const MatrixType *M           = nullptr;
-    const MatrixType *A           = nullptr;
-    const MatrixType *B           = nullptr;
-    const VectorType *f           = nullptr;
-    bool              lumped_mass = true;
+    const MatrixType    *M           = nullptr;
+    const VectorType    *M_lumped    = nullptr;
+    const MatrixType    *A           = nullptr;
+    const CachedProduct *A_product   = nullptr;
+    const MatrixType    *B           = nullptr;
+    const VectorType    *f           = nullptr;
+    bool                 lumped_mass = true;
+
+    /// y = M x.
+    void
+    mass_vmult(VectorType &y, const VectorType &x) const;
+
+    /// A x, remembered for the last x (CachedProduct).
+    const VectorType &
+    stiffness_vmult(const VectorType &x) const
+    {
+      return A_product->vmult(x);
+    }
+
+    /// ||M||_infty.
+    double
+    mass_linfty_norm() const;
+
+    /// matrix += factor * M (on M's sparsity pattern, which @p matrix
+    /// contains).
+    void
+    add_mass(MatrixType &matrix, const double factor) const;
   };
 
   /**
@@ -75,8 +126,8 @@ namespace dyncontact
     setup(const parallel::distributed::Triangulation<dim> &triangulation,
           const Scene<dim>                                &scene);
 
-    /// M, A, B, f and the boundary weights w; checks that no cell is
-    /// inverted.
+    /// M (the diagonal only if lumped), A, B, f and the boundary weights w;
+    /// checks that no cell is inverted.
     void
     assemble(const Scene<dim> &scene);
 
@@ -170,11 +221,6 @@ namespace dyncontact
       return constraints;
     }
     const MatrixType &
-    get_mass_matrix() const
-    {
-      return mass_matrix;
-    }
-    const MatrixType &
     get_stiffness_matrix() const
     {
       return stiffness_matrix;
@@ -205,6 +251,13 @@ namespace dyncontact
     get_body_component_dofs() const
     {
       return body_component_dofs;
+    }
+    /// For each locally owned DoF, in the order of the vectors' local
+    /// entries: body * dim + component.
+    const std::vector<unsigned char> &
+    get_owned_dof_slots() const
+    {
+      return owned_dof_slots;
     }
     /// Rigid translations, the near-null-space for AMG.
     const std::vector<std::vector<bool>> &
@@ -237,15 +290,19 @@ namespace dyncontact
     IndexSet                           scalar_locally_relevant;
     AffineConstraints<double>          constraints;
     std::vector<std::vector<IndexSet>> body_component_dofs;
+    std::vector<unsigned char>         owned_dof_slots;
     std::vector<std::vector<bool>>     constant_modes;
     std::map<types::global_dof_index, types::global_dof_index>
       owned_system0_to_scalar;
 
-    MatrixType mass_matrix;
-    MatrixType stiffness_matrix;
-    MatrixType viscous_matrix;
-    VectorType load;
-    VectorType boundary_weights;
+    /// the consistent mass matrix, or (lumped) its diagonal
+    MatrixType    mass_matrix;
+    VectorType    lumped_mass_diagonal;
+    MatrixType    stiffness_matrix;
+    CachedProduct stiffness_product;
+    MatrixType    viscous_matrix;
+    VectorType    load;
+    VectorType    boundary_weights;
 
     /// A state in transfer (refinement or checkpoint) and its ghosted copy.
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>

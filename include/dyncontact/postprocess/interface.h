@@ -14,7 +14,8 @@
 namespace dealii
 {
   class ParameterHandler;
-}
+  class TimerOutput;
+} // namespace dealii
 
 namespace dyncontact
 {
@@ -100,9 +101,11 @@ namespace dyncontact
       void
       open_file(const std::string &file);
 
-      /// One row for the current step: step, time, every postprocessor.
+      /// One row for the current step: step, time, every postprocessor;
+      /// the sampled statistics (error norms) are computed first and timed
+      /// in the section "sampled norms", the others in "diagnostics".
       void
-      execute();
+      execute(TimerOutput &timer);
 
       const Statistics &
       get_statistics() const

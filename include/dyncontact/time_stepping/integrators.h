@@ -106,6 +106,14 @@ namespace dyncontact
     double
     mass_norm(const VectorType &x) const;
 
+    /// Computes A u for the next step's right-hand side (kept in the
+    /// system's CachedProduct, where the energy finds it too).
+    void
+    prepare_next_step(const VectorType &u) const
+    {
+      system.stiffness_vmult(u);
+    }
+
     std::size_t
     n_rows() const
     {
