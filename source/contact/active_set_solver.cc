@@ -392,7 +392,7 @@ namespace dyncontact
                          std::vector<char>   &active,
                          std::vector<double> &multipliers) const
   {
-    Assert(H != nullptr, ExcInternalError());
+    Assert(H != nullptr || diagonal.size() > 0, ExcInternalError());
     active.resize(rows->size(), 0);
     multipliers.assign(rows->size(), 0.);
 

@@ -49,7 +49,7 @@ namespace dyncontact
          << (system->has_viscous_matrix() ?
                "viscoelastic (Kelvin-Voigt, viscous matrix B)" :
                "elastic (no viscous matrix)")
-         << ", " << (system->matrices().lumped_mass ? "lumped" : "consistent")
+         << ", " << (system->matrices().lumped_mass() ? "lumped" : "consistent")
          << " mass\n   time: ";
     if (scheme.is_static)
       text << "static problem (one solve)";

@@ -586,7 +586,6 @@ namespace dyncontact
     system.A_product = &stiffness_product;
     system.B         = viscous ? &viscous_matrix : nullptr;
     system.f         = &load;
-    system.lumped_mass = parameters.lumped_mass;
     return system;
   }
 

@@ -49,7 +49,7 @@ namespace dyncontact
                              locally_relevant,
                              mesh_constraints,
                              rows);
-    if (system.lumped_mass)
+    if (system.lumped_mass())
       projection_solver.set_diagonal_matrix(*system.M_lumped);
     else
       projection_solver.set_matrix(*system.M);
@@ -87,8 +87,9 @@ namespace dyncontact
         double ratio = 1.;
         for (const auto i : locally_owned)
           {
-            const double M_ii = system.lumped_mass ? (*system.M_lumped)(i) :
-                                                     system.M->diag_element(i);
+            const double M_ii = system.lumped_mass() ?
+                                  (*system.M_lumped)(i) :
+                                  system.M->diag_element(i);
             if (M_ii > 0.)
               ratio = std::max(ratio, S.diag_element(i) / M_ii);
           }

@@ -180,7 +180,7 @@ namespace dyncontact
                const MatrixType *preconditioner_matrix = nullptr);
 
     /**
-     * Sets H = diag(@p diagonal), a lumped mass (kept as a reference);
+     * Sets H = diag(@p diagonal), a lumped mass (copied);
      * Jacobi is used, and with rows that only touch unconstrained slave DoFs
      * the solve is pointwise.
      */

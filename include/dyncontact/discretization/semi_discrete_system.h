@@ -62,13 +62,19 @@ namespace dyncontact
    */
   struct SystemMatrices
   {
-    const MatrixType    *M           = nullptr;
-    const VectorType    *M_lumped    = nullptr;
-    const MatrixType    *A           = nullptr;
-    const CachedProduct *A_product   = nullptr;
-    const MatrixType    *B           = nullptr;
-    const VectorType    *f           = nullptr;
-    bool                 lumped_mass = true;
+    const MatrixType    *M         = nullptr;
+    const VectorType    *M_lumped  = nullptr;
+    const MatrixType    *A         = nullptr;
+    const CachedProduct *A_product = nullptr;
+    const MatrixType    *B         = nullptr;
+    const VectorType    *f         = nullptr;
+
+    /// Whether the mass is lumped (given by M_lumped, M is nullptr).
+    bool
+    lumped_mass() const
+    {
+      return M == nullptr;
+    }
 
     /// y = M x.
     void
