@@ -274,7 +274,10 @@ namespace dyncontact
                                     AffineConstraints<double> &constraints,
                                     const bool homogeneous) const
   {
-    constraints.clear();
+    // local lines: the relevant DoFs and the rows' DoFs (clear() alone
+    // would size the lines' index cache by the global number of DoFs on
+    // every rank)
+    constraints.reinit(row_operator.ghost_set());
     for (unsigned int p = 0; p < rows->size(); ++p)
       if (active[p])
         {
@@ -410,14 +413,24 @@ namespace dyncontact
       {
         make_constraints(active, constraints, false);
         make_constraints(active, homogeneous, true);
+        // without active rows k = 0 and every multiplier is zero
+        const bool any_active =
+          Utilities::MPI::max(
+            std::find(active.begin(), active.end(), 1) != active.end() ? 1 : 0,
+            comm) == 1;
 
         // k: the inhomogeneities (v = T x + k)
         k = 0.;
         constraints.distribute(k);
 
         // b = T^T (r - H k)
-        vmult_H(b, k);
-        b.sadd(-1., 1., r);
+        if (any_active)
+          {
+            vmult_H(b, k);
+            b.sadd(-1., 1., r);
+          }
+        else
+          b = r;
         transpose_distribute(homogeneous, b);
 
         // warm start: the previous iterate, constrained entries zero
@@ -483,21 +496,24 @@ namespace dyncontact
         constraints.distribute(v);
 
         // multipliers from the residual r - H v at the slave nodes
-        vmult_H(residual, v);
-        residual.sadd(-1., 1., r);
-        {
-          VectorType ghosted(locally_owned, row_operator.ghost_set(), comm);
-          ghosted = residual;
-          for (unsigned int p = 0; p < rows->size(); ++p)
-            {
-              const ContactRow &row = rows->rows[p];
-              multipliers[p]        = 0.;
-              if (active[p])
-                for (unsigned int c = 0; c < row.n_components; ++c)
-                  multipliers[p] +=
-                    row.normal[c] * ghosted(row.entries[c].first);
-            }
-        }
+        if (any_active)
+          {
+            vmult_H(residual, v);
+            residual.sadd(-1., 1., r);
+            VectorType ghosted(locally_owned, row_operator.ghost_set(), comm);
+            ghosted = residual;
+            for (unsigned int p = 0; p < rows->size(); ++p)
+              {
+                const ContactRow &row = rows->rows[p];
+                multipliers[p]        = 0.;
+                if (active[p])
+                  for (unsigned int c = 0; c < row.n_components; ++c)
+                    multipliers[p] +=
+                      row.normal[c] * ghosted(row.entries[c].first);
+              }
+          }
+        else
+          std::fill(multipliers.begin(), multipliers.end(), 0.);
 
         // new active set: mu_p + c_p (C v - g)_p > 0
         // (a displacement tolerance delta keeps round-off from flipping rows
