@@ -52,14 +52,23 @@ namespace dyncontact
 
 
 
+  const VectorType &
+  ContactRowOperator::with_row_ghosts(const VectorType &v) const
+  {
+    ghosted_row_dofs = v;
+    return ghosted_row_dofs;
+  }
+
+
+
   std::vector<double>
   ContactRowOperator::apply(const VectorType &v) const
   {
-    ghosted_row_dofs = v;
+    const VectorType   &ghosted = with_row_ghosts(v);
     std::vector<double> values(size(), 0.);
     for (unsigned int p = 0; p < values.size(); ++p)
       for (const auto &entry : contact_rows->rows[p].entries)
-        values[p] += entry.second * ghosted_row_dofs(entry.first);
+        values[p] += entry.second * ghosted(entry.first);
     return values;
   }
 
@@ -500,8 +509,7 @@ namespace dyncontact
           {
             vmult_H(residual, v);
             residual.sadd(-1., 1., r);
-            VectorType ghosted(locally_owned, row_operator.ghost_set(), comm);
-            ghosted = residual;
+            const VectorType &ghosted = row_operator.with_row_ghosts(residual);
             for (unsigned int p = 0; p < rows->size(); ++p)
               {
                 const ContactRow &row = rows->rows[p];

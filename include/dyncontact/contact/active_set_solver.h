@@ -44,6 +44,11 @@ namespace dyncontact
            const IndexSet    &locally_relevant,
            const ContactRows &rows);
 
+    /// @p v with the ghost entries of the rows' DoFs (valid until the next
+    /// call): what reading a row's entries needs.
+    const VectorType &
+    with_row_ghosts(const VectorType &v) const;
+
     /// (C v)_p for this rank's rows (no gap subtracted).
     std::vector<double>
     apply(const VectorType &v) const;
@@ -76,7 +81,7 @@ namespace dyncontact
     IndexSet           locally_owned;
     IndexSet           ghosts;
     const ContactRows *contact_rows = nullptr;
-    /// v with the ghost entries of the rows' DoFs (apply()'s work vector)
+    /// v with the ghost entries of the rows' DoFs (with_row_ghosts())
     mutable VectorType ghosted_row_dofs;
   };
 
