@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace dyncontact
@@ -154,8 +155,9 @@ namespace dyncontact
       scale = std::max(scale, face.vertices[0].distance(face.vertices.back()));
     if (scale == 0.)
       scale = 1.;
-    using Key = std::array<long long, 3>;
-    auto key  = [&](const Point<dim> &p) {
+    max_face_size = scale;
+    using Key     = std::array<long long, 3>;
+    auto key      = [&](const Point<dim> &p) {
       double x[3] = {0., 0., 0.};
       for (unsigned int d = 0; d < dim; ++d)
         x[d] = p[d];
@@ -217,6 +219,76 @@ namespace dyncontact
     const double        bound    = x.distance(
       face_point(vertices, closest_point_on_face(vertices, x, clamped)));
     return closest_image(x, bound * (1. + 1e-12) + 1e-300);
+  }
+
+
+
+  template <int dim>
+  double
+  ContactMapping<dim>::distance(const Point<dim> &x) const
+  {
+    double best = std::numeric_limits<double>::infinity();
+    if (master_faces.empty())
+      return best;
+    auto face_distance = [&](const unsigned int f) {
+      std::array<bool, 4> clamped;
+      const auto         &vertices = master_faces[f].vertices;
+      return x.distance(
+        face_point(vertices, closest_point_on_face(vertices, x, clamped)));
+    };
+    // the face of the nearest bounding box bounds the distance from above
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+    tree->rtree.query(boost::geometry::index::nearest(x, 1),
+                      std::back_inserter(nearest));
+    best             = face_distance(nearest[0].second);
+    Point<dim> lower = x, upper = x;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] -= best;
+        upper[d] += best;
+      }
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> candidates;
+    tree->rtree.query(boost::geometry::index::intersects(
+                        BoundingBox<dim>(std::make_pair(lower, upper))),
+                      std::back_inserter(candidates));
+    for (const auto &candidate : candidates)
+      best = std::min(best, face_distance(candidate.second));
+    return best;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  ContactMapping<dim>::faces_within(const Point<dim> &x,
+                                    const double      max_distance) const
+  {
+    std::vector<unsigned int> within;
+    if (master_faces.empty())
+      return within;
+    const double reach = max_distance * (1. + 1e-10) + 1e-10 * max_face_size;
+    Point<dim>   lower = x, upper = x;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] -= reach;
+        upper[d] += reach;
+      }
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> candidates;
+    tree->rtree.query(boost::geometry::index::intersects(
+                        BoundingBox<dim>(std::make_pair(lower, upper))),
+                      std::back_inserter(candidates));
+    for (const auto &candidate : candidates)
+      {
+        const auto         &vertices = master_faces[candidate.second].vertices;
+        std::array<bool, 4> clamped;
+        const double        distance = x.distance(
+          face_point(vertices, closest_point_on_face(vertices, x, clamped)));
+        if (distance <= max_distance * (1. + 1e-10) +
+                          1e-10 * vertices[0].distance(vertices.back()))
+          within.push_back(candidate.second);
+      }
+    std::sort(within.begin(), within.end());
+    return within;
   }
 
 

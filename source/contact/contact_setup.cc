@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <memory>
 #include <set>
 
 namespace dyncontact
@@ -348,34 +350,18 @@ namespace dyncontact
         master_surfaces.push_back(sides[1 - slave]);
       }
 
-    // the penetration check of the slave nodes without a row (closest
-    // point at any distance) gathers the whole master surfaces, and their
-    // vertex DoFs as ghosts, but only if there are such nodes: the one
-    // place where a rank holds more than its neighbourhood
+    // the penetration check of the slave nodes without a row keeps this
+    // rank's master faces, but only if there are such nodes
     n_unmatched_nodes =
       Utilities::MPI::sum<types::global_dof_index>(unmatched.size(), comm);
+    n_unmatched_in_pair.assign(master_surfaces.size(), 0);
+    for (const auto &node : unmatched)
+      ++n_unmatched_in_pair[node.pair];
+    Utilities::MPI::sum(n_unmatched_in_pair, comm, n_unmatched_in_pair);
     this->locally_owned = locally_owned;
-    master_ghosts       = system.locally_relevant_dofs();
+    locally_relevant    = system.locally_relevant_dofs();
     if (n_unmatched_nodes == 0)
       master_surfaces.clear();
-    for (auto &surface : master_surfaces)
-      {
-        std::vector<MasterFace<dim>> all;
-        for (const auto &rank_faces : Utilities::MPI::all_gather(comm, surface))
-          all.insert(all.end(), rank_faces.begin(), rank_faces.end());
-        surface = std::move(all);
-      }
-    std::vector<types::global_dof_index> vertex_dofs;
-    for (const auto &surface : master_surfaces)
-      for (const auto &face : surface)
-        vertex_dofs.insert(vertex_dofs.end(),
-                           face.vertex_dofs.begin(),
-                           face.vertex_dofs.end());
-    std::sort(vertex_dofs.begin(), vertex_dofs.end());
-    vertex_dofs.erase(std::unique(vertex_dofs.begin(), vertex_dofs.end()),
-                      vertex_dofs.end());
-    master_ghosts.add_indices(vertex_dofs.begin(), vertex_dofs.end());
-    master_ghosts.compress();
 
     row_operator.reinit(locally_owned, system.locally_relevant_dofs(), rows);
 
@@ -399,16 +385,14 @@ namespace dyncontact
     Penetration deepest;
     if (n_unmatched_nodes == 0)
       return deepest;
-    VectorType ghosted(locally_owned, master_ghosts, comm);
+    VectorType ghosted(locally_owned, locally_relevant, comm);
     ghosted = u;
     for (unsigned int pair = 0; pair < master_surfaces.size(); ++pair)
       {
-        bool any = false;
-        for (const auto &node : unmatched)
-          any = any || (node.pair == pair);
-        if (!any)
+        if (n_unmatched_in_pair[pair] == 0)
           continue;
-        // the deformed master surface
+        // this rank's faces of the deformed master surface (their vertex
+        // DoFs are locally relevant)
         std::vector<MasterFace<dim>> deformed = master_surfaces[pair];
         for (auto &face : deformed)
           {
@@ -423,14 +407,22 @@ namespace dyncontact
               }
             face.cell_center += mean;
           }
-        const ContactMapping<dim> phi(deformed, 0.);
+        std::vector<Point<dim>> points;
         for (const auto &node : unmatched)
           if (node.pair == pair)
             {
               Point<dim> y = node.x;
               for (unsigned int d = 0; d < dim; ++d)
                 y[d] += ghosted(node.dofs[d]);
-              const auto image = phi.find_closest(y);
+              points.push_back(y);
+            }
+        const ContactMapping<dim> phi(closest_faces(deformed, points), 0.);
+        unsigned int              p = 0;
+        for (const auto &node : unmatched)
+          if (node.pair == pair)
+            {
+              const Point<dim> &y     = points[p++];
+              const auto        image = phi.find_closest(y);
               if (image && (y - image->point) * image->master_normal < 0. &&
                   image->gap > deepest.depth)
                 {
@@ -467,39 +459,7 @@ namespace dyncontact
                                 const double radius) const
   {
     // 1. every rank's bounding box of its faces (one box per rank)
-    const unsigned int  n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    std::vector<double> box(2 * dim, 0.);
-    if (!faces.empty())
-      {
-        BoundingBox<dim> local(faces[0].vertices);
-        for (const auto &face : faces)
-          local.merge_with(BoundingBox<dim>(face.vertices));
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            box[d]       = local.get_boundary_points().first[d];
-            box[dim + d] = local.get_boundary_points().second[d];
-          }
-      }
-    else
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          box[d]       = 1.;
-          box[dim + d] = -1.; // empty
-        }
-    const auto boxes = Utilities::MPI::all_gather(comm, box);
-    std::vector<std::pair<BoundingBox<dim>, unsigned int>> rank_boxes;
-    for (unsigned int rank = 0; rank < n_ranks; ++rank)
-      if (boxes[rank][0] <= boxes[rank][dim])
-        {
-          Point<dim> lower, upper;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] = boxes[rank][d];
-              upper[d] = boxes[rank][dim + d];
-            }
-          rank_boxes.emplace_back(std::make_pair(lower, upper), rank);
-        }
-    const auto rank_tree = pack_rtree(rank_boxes);
+    const auto rank_tree = pack_rtree(rank_boxes(faces));
 
     // 2. each point (with its search box) goes to the ranks whose faces'
     // box it meets
@@ -554,6 +514,148 @@ namespace dyncontact
          Utilities::MPI::some_to_some(comm, answers))
       near.insert(near.end(), rank_faces.begin(), rank_faces.end());
     return near;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<BoundingBox<dim>, unsigned int>>
+  ContactSetup<dim>::rank_boxes(const std::vector<MasterFace<dim>> &faces) const
+  {
+    std::vector<double> box(2 * dim, 0.);
+    if (!faces.empty())
+      {
+        BoundingBox<dim> local(faces[0].vertices);
+        for (const auto &face : faces)
+          local.merge_with(BoundingBox<dim>(face.vertices));
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            box[d]       = local.get_boundary_points().first[d];
+            box[dim + d] = local.get_boundary_points().second[d];
+          }
+      }
+    else
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          box[d]       = 1.;
+          box[dim + d] = -1.; // empty
+        }
+    const auto boxes = Utilities::MPI::all_gather(comm, box);
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> result;
+    for (unsigned int rank = 0; rank < boxes.size(); ++rank)
+      if (boxes[rank][0] <= boxes[rank][dim])
+        {
+          Point<dim> lower, upper;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = boxes[rank][d];
+              upper[d] = boxes[rank][dim + d];
+            }
+          result.emplace_back(std::make_pair(lower, upper), rank);
+        }
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<MasterFace<dim>>
+  ContactSetup<dim>::closest_faces(const std::vector<MasterFace<dim>> &faces,
+                                   const std::vector<Point<dim>> &points) const
+  {
+    // 1. each point goes to the ranks whose faces' box is not farther than
+    // the farthest corner of the nearest such box (a face in that box is
+    // at most that far)
+    const auto rank_tree = pack_rtree(rank_boxes(faces));
+    std::map<unsigned int, std::vector<double>>       requests;
+    std::map<unsigned int, std::vector<unsigned int>> asked; // point numbers
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const Point<dim>                                      &x = points[i];
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+        rank_tree.query(boost::geometry::index::nearest(x, 1),
+                        std::back_inserter(nearest));
+        if (nearest.empty())
+          break; // no rank has faces
+        const auto [lower, upper] = nearest[0].first.get_boundary_points();
+        double bound              = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          bound += std::pow(std::max(std::abs(x[d] - lower[d]),
+                                     std::abs(x[d] - upper[d])),
+                            2);
+        bound = std::sqrt(bound) * (1. + 1e-12);
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+        rank_tree.query(boost::geometry::index::intersects(
+                          search_box(x, bound)),
+                        std::back_inserter(hits));
+        for (const auto &hit : hits)
+          {
+            requests[hit.second].insert(requests[hit.second].end(),
+                                        x.begin_raw(),
+                                        x.end_raw());
+            asked[hit.second].push_back(i);
+          }
+      }
+
+    // 2. each rank answers with the distance to its closest face
+    std::unique_ptr<ContactMapping<dim>> local;
+    auto                                 local_mapping = [&]() {
+      if (!local)
+        local = std::make_unique<ContactMapping<dim>>(faces, 0.);
+      return local.get();
+    };
+    std::map<unsigned int, std::vector<double>> distances;
+    for (const auto &[rank, coordinates] :
+         Utilities::MPI::some_to_some(comm, requests))
+      for (std::size_t i = 0; i + dim <= coordinates.size(); i += dim)
+        {
+          Point<dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = coordinates[i + d];
+          distances[rank].push_back(local_mapping()->distance(x));
+        }
+    std::vector<double> least(points.size(),
+                              std::numeric_limits<double>::infinity());
+    for (const auto &[rank, answer] :
+         Utilities::MPI::some_to_some(comm, distances))
+      for (unsigned int k = 0; k < answer.size(); ++k)
+        least[asked[rank][k]] = std::min(least[asked[rank][k]], answer[k]);
+
+    // 3. the same ranks answer with their faces at the least distance
+    std::map<unsigned int, std::vector<double>> requests_2;
+    for (const auto &[rank, numbers] : asked)
+      for (const unsigned int i : numbers)
+        {
+          auto &request = requests_2[rank];
+          request.insert(request.end(),
+                         points[i].begin_raw(),
+                         points[i].end_raw());
+          request.push_back(least[i]);
+        }
+    std::map<unsigned int, std::vector<MasterFace<dim>>> answers;
+    for (const auto &[rank, data] :
+         Utilities::MPI::some_to_some(comm, requests_2))
+      {
+        std::vector<bool> wanted(faces.size(), false);
+        for (std::size_t i = 0; i + dim + 1 <= data.size(); i += dim + 1)
+          {
+            Point<dim> x;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = data[i + d];
+            for (const unsigned int f :
+                 local_mapping()->faces_within(x, data[i + dim]))
+              wanted[f] = true;
+          }
+        auto &answer = answers[rank];
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (wanted[f])
+            answer.push_back(faces[f]);
+      }
+    std::vector<MasterFace<dim>> closest;
+    for (const auto &[rank, rank_faces] :
+         Utilities::MPI::some_to_some(comm, answers))
+      closest.insert(closest.end(), rank_faces.begin(), rank_faces.end());
+    return closest;
   }
 
 

@@ -17,14 +17,15 @@ namespace dyncontact
   using namespace dealii;
 
   /**
-   * One face of the master contact surface, as every rank sees it after the
-   * surface is gathered: its vertices (in the face's own order; the face is
-   * bilinear, as MappingQ1 sees it), the centre of its cell (to orient the
-   * outward normal), and for each face node (FE_Q<dim-1>(p) numbering) and
-   * displacement component the unconstrained DoFs it stands for (a hanging
-   * node expands into its parents, a Dirichlet DoF into nothing), and which
-   * sides of the face (numbered as in closest_point_on_face) lie on a plane
-   * of symmetry of the model, across which the surface continues.
+   * One face of the master contact surface, as the rank that owns its cell
+   * sends it to the ranks whose slave nodes are near: its vertices (in the
+   * face's own order; the face is bilinear, as MappingQ1 sees it), the centre
+   * of its cell (to orient the outward normal), and for each face node
+   * (FE_Q<dim-1>(p) numbering) and displacement component the unconstrained
+   * DoFs it stands for (a hanging node expands into its parents, a Dirichlet
+   * DoF into nothing), and which sides of the face (numbered as in
+   * closest_point_on_face) lie on a plane of symmetry of the model, across
+   * which the surface continues.
    */
   template <int dim>
   struct MasterFace
@@ -106,6 +107,16 @@ namespace dyncontact
     std::optional<Image<dim>>
     find_closest(const Point<dim> &x) const;
 
+    /// The distance from @p x to the closest point of the faces (infinity
+    /// without faces), rim or not.
+    double
+    distance(const Point<dim> &x) const;
+
+    /// The faces whose closest point to @p x is at most @p max_distance
+    /// away, up to round-off (1e-10 of the distance and of the face's size).
+    std::vector<unsigned int>
+    faces_within(const Point<dim> &x, const double max_distance) const;
+
     const std::vector<MasterFace<dim>> &
     faces() const
     {
@@ -124,6 +135,7 @@ namespace dyncontact
     /// on a plane of symmetry?
     std::vector<std::array<bool, 4>> rim;
     double                           radius;
+    double                           max_face_size = 1.;
     std::unique_ptr<Tree>            tree;
   };
 

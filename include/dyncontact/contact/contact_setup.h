@@ -92,10 +92,11 @@ namespace dyncontact
      * still pass into the other body if the radius was too small: this
      * finds the deepest such node, by the closest point of its deformed
      * position x + u(x) on the deformed master surface (at any distance),
-     * inside if it lies behind the master face. For this check alone every
-     * rank holds the whole master surface, and only when some slave node
-     * has no row. Collective; nothing is done (and no communication
-     * happens) when every slave node has a row.
+     * inside if it lies behind the master face. Each rank deforms the
+     * master faces of its own cells and sends to every rank only the faces
+     * closest to that rank's nodes (closest_faces()). Collective; nothing
+     * is done (and no communication happens) when every slave node has a
+     * row.
      */
     Penetration
     unmatched_penetration(const VectorType &u) const;
@@ -144,6 +145,25 @@ namespace dyncontact
                const std::vector<Point<dim>>      &points,
                const double                        radius) const;
 
+    /**
+     * The closest-point search at any distance: of the faces that all ranks
+     * pass in @p faces (each its own), those on which the closest point of
+     * one of this rank's @p points lies (every face at the least distance,
+     * up to round-off), in rank order. Two rounds of messages to the ranks
+     * whose faces' bounding box can hold the closest point: the first
+     * returns each point's distance to their faces, the second the faces at
+     * the least distance. The only global communication is one bounding box
+     * per rank. Collective.
+     */
+    std::vector<MasterFace<dim>>
+    closest_faces(const std::vector<MasterFace<dim>> &faces,
+                  const std::vector<Point<dim>>      &points) const;
+
+    /// Every rank's bounding box of its @p faces, with the rank (ranks
+    /// without faces left out). Collective.
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>>
+    rank_boxes(const std::vector<MasterFace<dim>> &faces) const;
+
     /// A locally owned slave node without a row.
     struct UnmatchedNode
     {
@@ -158,14 +178,15 @@ namespace dyncontact
     types::global_dof_index    n_global_row_count = 0;
     std::vector<UnmatchedNode> unmatched;
     types::global_dof_index    n_unmatched_nodes = 0;
-    /// Per pair (kept only if a node has no row): the whole master
-    /// surface.
+    /// Per pair (kept only if a slave node has no row): this rank's faces
+    /// of the master surface, and the number of nodes without a row over
+    /// all ranks.
     std::vector<std::vector<MasterFace<dim>>> master_surfaces;
-    /// The locally relevant DoFs plus the master surfaces' vertex DoFs.
-    IndexSet                             master_ghosts;
-    IndexSet                             locally_owned;
-    std::vector<types::global_dof_index> row_scalar_dofs;
-    ContactRowOperator                   row_operator;
+    std::vector<types::global_dof_index>      n_unmatched_in_pair;
+    IndexSet                                  locally_owned;
+    IndexSet                                  locally_relevant;
+    std::vector<types::global_dof_index>      row_scalar_dofs;
+    ContactRowOperator                        row_operator;
   };
 } // namespace dyncontact
 
