@@ -277,14 +277,23 @@ namespace dyncontact
     tree->rtree.query(boost::geometry::index::intersects(
                         BoundingBox<dim>(std::make_pair(lower, upper))),
                       std::back_inserter(candidates));
+    // by the distance to the face's bounding box, a lower bound of the
+    // distance to the face: a projection that stops short on a warped face
+    // cannot drop a face that holds the closest point
     for (const auto &candidate : candidates)
       {
-        const auto         &vertices = master_faces[candidate.second].vertices;
-        std::array<bool, 4> clamped;
-        const double        distance = x.distance(
-          face_point(vertices, closest_point_on_face(vertices, x, clamped)));
-        if (distance <= max_distance * (1. + 1e-10) +
-                          1e-10 * vertices[0].distance(vertices.back()))
+        const auto &[low, high] = candidate.first.get_boundary_points();
+        double squared          = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double outside =
+              std::max({low[d] - x[d], x[d] - high[d], 0.});
+            squared += outside * outside;
+          }
+        const auto &vertices = master_faces[candidate.second].vertices;
+        if (std::sqrt(squared) <=
+            max_distance * (1. + 1e-10) +
+              1e-10 * vertices[0].distance(vertices.back()))
           within.push_back(candidate.second);
       }
     std::sort(within.begin(), within.end());

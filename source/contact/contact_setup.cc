@@ -32,7 +32,184 @@ namespace dyncontact
         }
       return BoundingBox<dim>(std::make_pair(lower, upper));
     }
+
+
+
+    /// The Euclidean distance from @p x to @p box (0 inside).
+    template <int dim>
+    double
+    box_distance(const BoundingBox<dim> &box, const Point<dim> &x)
+    {
+      const auto [lower, upper] = box.get_boundary_points();
+      double squared            = 0.;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double outside =
+            std::max({lower[d] - x[d], x[d] - upper[d], 0.});
+          squared += outside * outside;
+        }
+      return std::sqrt(squared);
+    }
+
+
+
+    /// MINMAXDIST (Roussopoulos et al. 1995): every face of the bounding
+    /// box of a set of faces' vertices touches a vertex, so some face lies
+    /// at most this far from @p x.
+    template <int dim>
+    double
+    min_max_distance(const BoundingBox<dim> &box, const Point<dim> &x)
+    {
+      const auto [lower, upper] = box.get_boundary_points();
+      double far_squared        = 0.; // to the farther side, every axis
+      for (unsigned int d = 0; d < dim; ++d)
+        far_squared += std::pow(std::max(std::abs(x[d] - lower[d]),
+                                         std::abs(x[d] - upper[d])),
+                                2);
+      double best = std::numeric_limits<double>::infinity();
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          const double far =
+            std::max(std::abs(x[k] - lower[k]), std::abs(x[k] - upper[k]));
+          const double near =
+            std::min(std::abs(x[k] - lower[k]), std::abs(x[k] - upper[k]));
+          best = std::min(best, far_squared - far * far + near * near);
+        }
+      return std::sqrt(std::max(best, 0.));
+    }
+
+
+
+    /// Every rank's bounding box of its @p faces, with the rank (ranks
+    /// without faces left out). Collective.
+    template <int dim>
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>>
+    rank_boxes(const std::vector<MasterFace<dim>> &faces, const MPI_Comm comm)
+    {
+      std::vector<double> box(2 * dim, 0.);
+      if (!faces.empty())
+        {
+          BoundingBox<dim> local(faces[0].vertices);
+          for (const auto &face : faces)
+            local.merge_with(BoundingBox<dim>(face.vertices));
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              box[d]       = local.get_boundary_points().first[d];
+              box[dim + d] = local.get_boundary_points().second[d];
+            }
+        }
+      else
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            box[d]       = 1.;
+            box[dim + d] = -1.; // empty
+          }
+      const auto boxes = Utilities::MPI::all_gather(comm, box);
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> result;
+      for (unsigned int rank = 0; rank < boxes.size(); ++rank)
+        if (boxes[rank][0] <= boxes[rank][dim])
+          {
+            Point<dim> lower, upper;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = boxes[rank][d];
+                upper[d] = boxes[rank][dim + d];
+              }
+            result.emplace_back(std::make_pair(lower, upper), rank);
+          }
+      return result;
+    }
   } // namespace
+
+
+
+  template <int dim>
+  std::vector<MasterFace<dim>>
+  closest_faces(const std::vector<MasterFace<dim>> &faces,
+                const std::vector<Point<dim>>      &points,
+                const MPI_Comm                      comm)
+  {
+    // 1. each point goes to the ranks whose faces' box is not farther than
+    // the least MINMAXDIST of the boxes (some face lies that near)
+    const auto rank_tree = pack_rtree(rank_boxes(faces, comm));
+    std::map<unsigned int, std::vector<double>>       requests;
+    std::map<unsigned int, std::vector<unsigned int>> asked; // point numbers
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const Point<dim>                                      &x = points[i];
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+        rank_tree.query(boost::geometry::index::nearest(x, 1),
+                        std::back_inserter(nearest));
+        if (nearest.empty())
+          break; // no rank has faces
+        double bound = min_max_distance(nearest[0].first, x);
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+        rank_tree.query(boost::geometry::index::intersects(
+                          search_box(x, bound)),
+                        std::back_inserter(hits));
+        for (const auto &hit : hits)
+          bound = std::min(bound, min_max_distance(hit.first, x));
+        bound = bound * (1. + 1e-12);
+        for (const auto &hit : hits)
+          if (box_distance(hit.first, x) <= bound)
+            {
+              requests[hit.second].insert(requests[hit.second].end(),
+                                          x.begin_raw(),
+                                          x.end_raw());
+              asked[hit.second].push_back(i);
+            }
+      }
+
+    // 2. each rank answers with the distance to its closest face, and keeps
+    // the points for step 3
+    std::unique_ptr<ContactMapping<dim>> local;
+    if (!faces.empty())
+      local = std::make_unique<ContactMapping<dim>>(faces, 0.);
+    std::map<unsigned int, std::vector<Point<dim>>> received_points;
+    std::map<unsigned int, std::vector<double>>     distances;
+    for (const auto &[rank, coordinates] :
+         Utilities::MPI::some_to_some(comm, requests))
+      for (std::size_t i = 0; i + dim <= coordinates.size(); i += dim)
+        {
+          Point<dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = coordinates[i + d];
+          received_points[rank].push_back(x);
+          distances[rank].push_back(local->distance(x));
+        }
+    std::vector<double> least(points.size(),
+                              std::numeric_limits<double>::infinity());
+    for (const auto &[rank, answer] :
+         Utilities::MPI::some_to_some(comm, distances))
+      for (unsigned int k = 0; k < answer.size(); ++k)
+        least[asked[rank][k]] = std::min(least[asked[rank][k]], answer[k]);
+
+    // 3. the same ranks get the least distance of each point and answer
+    // with their faces that near
+    std::map<unsigned int, std::vector<double>> least_sent;
+    for (const auto &[rank, numbers] : asked)
+      for (const unsigned int i : numbers)
+        least_sent[rank].push_back(least[i]);
+    std::map<unsigned int, std::vector<MasterFace<dim>>> answers;
+    for (const auto &[rank, bounds] :
+         Utilities::MPI::some_to_some(comm, least_sent))
+      {
+        std::vector<bool> wanted(faces.size(), false);
+        const auto       &x = received_points[rank];
+        for (unsigned int k = 0; k < bounds.size(); ++k)
+          for (const unsigned int f : local->faces_within(x[k], bounds[k]))
+            wanted[f] = true;
+        auto &answer = answers[rank];
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          if (wanted[f])
+            answer.push_back(faces[f]);
+      }
+    std::vector<MasterFace<dim>> closest;
+    for (const auto &[rank, rank_faces] :
+         Utilities::MPI::some_to_some(comm, answers))
+      closest.insert(closest.end(), rank_faces.begin(), rank_faces.end());
+    return closest;
+  }
 
 
 
@@ -416,7 +593,8 @@ namespace dyncontact
                 y[d] += ghosted(node.dofs[d]);
               points.push_back(y);
             }
-        const ContactMapping<dim> phi(closest_faces(deformed, points), 0.);
+        const ContactMapping<dim> phi(closest_faces(deformed, points, comm),
+                                      0.);
         unsigned int              p = 0;
         for (const auto &node : unmatched)
           if (node.pair == pair)
@@ -459,7 +637,7 @@ namespace dyncontact
                                 const double radius) const
   {
     // 1. every rank's bounding box of its faces (one box per rank)
-    const auto rank_tree = pack_rtree(rank_boxes(faces));
+    const auto rank_tree = pack_rtree(rank_boxes(faces, comm));
 
     // 2. each point (with its search box) goes to the ranks whose faces'
     // box it meets
@@ -514,148 +692,6 @@ namespace dyncontact
          Utilities::MPI::some_to_some(comm, answers))
       near.insert(near.end(), rank_faces.begin(), rank_faces.end());
     return near;
-  }
-
-
-
-  template <int dim>
-  std::vector<std::pair<BoundingBox<dim>, unsigned int>>
-  ContactSetup<dim>::rank_boxes(const std::vector<MasterFace<dim>> &faces) const
-  {
-    std::vector<double> box(2 * dim, 0.);
-    if (!faces.empty())
-      {
-        BoundingBox<dim> local(faces[0].vertices);
-        for (const auto &face : faces)
-          local.merge_with(BoundingBox<dim>(face.vertices));
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            box[d]       = local.get_boundary_points().first[d];
-            box[dim + d] = local.get_boundary_points().second[d];
-          }
-      }
-    else
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          box[d]       = 1.;
-          box[dim + d] = -1.; // empty
-        }
-    const auto boxes = Utilities::MPI::all_gather(comm, box);
-    std::vector<std::pair<BoundingBox<dim>, unsigned int>> result;
-    for (unsigned int rank = 0; rank < boxes.size(); ++rank)
-      if (boxes[rank][0] <= boxes[rank][dim])
-        {
-          Point<dim> lower, upper;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] = boxes[rank][d];
-              upper[d] = boxes[rank][dim + d];
-            }
-          result.emplace_back(std::make_pair(lower, upper), rank);
-        }
-    return result;
-  }
-
-
-
-  template <int dim>
-  std::vector<MasterFace<dim>>
-  ContactSetup<dim>::closest_faces(const std::vector<MasterFace<dim>> &faces,
-                                   const std::vector<Point<dim>> &points) const
-  {
-    // 1. each point goes to the ranks whose faces' box is not farther than
-    // the farthest corner of the nearest such box (a face in that box is
-    // at most that far)
-    const auto rank_tree = pack_rtree(rank_boxes(faces));
-    std::map<unsigned int, std::vector<double>>       requests;
-    std::map<unsigned int, std::vector<unsigned int>> asked; // point numbers
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const Point<dim>                                      &x = points[i];
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
-        rank_tree.query(boost::geometry::index::nearest(x, 1),
-                        std::back_inserter(nearest));
-        if (nearest.empty())
-          break; // no rank has faces
-        const auto [lower, upper] = nearest[0].first.get_boundary_points();
-        double bound              = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          bound += std::pow(std::max(std::abs(x[d] - lower[d]),
-                                     std::abs(x[d] - upper[d])),
-                            2);
-        bound = std::sqrt(bound) * (1. + 1e-12);
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-        rank_tree.query(boost::geometry::index::intersects(
-                          search_box(x, bound)),
-                        std::back_inserter(hits));
-        for (const auto &hit : hits)
-          {
-            requests[hit.second].insert(requests[hit.second].end(),
-                                        x.begin_raw(),
-                                        x.end_raw());
-            asked[hit.second].push_back(i);
-          }
-      }
-
-    // 2. each rank answers with the distance to its closest face
-    std::unique_ptr<ContactMapping<dim>> local;
-    auto                                 local_mapping = [&]() {
-      if (!local)
-        local = std::make_unique<ContactMapping<dim>>(faces, 0.);
-      return local.get();
-    };
-    std::map<unsigned int, std::vector<double>> distances;
-    for (const auto &[rank, coordinates] :
-         Utilities::MPI::some_to_some(comm, requests))
-      for (std::size_t i = 0; i + dim <= coordinates.size(); i += dim)
-        {
-          Point<dim> x;
-          for (unsigned int d = 0; d < dim; ++d)
-            x[d] = coordinates[i + d];
-          distances[rank].push_back(local_mapping()->distance(x));
-        }
-    std::vector<double> least(points.size(),
-                              std::numeric_limits<double>::infinity());
-    for (const auto &[rank, answer] :
-         Utilities::MPI::some_to_some(comm, distances))
-      for (unsigned int k = 0; k < answer.size(); ++k)
-        least[asked[rank][k]] = std::min(least[asked[rank][k]], answer[k]);
-
-    // 3. the same ranks answer with their faces at the least distance
-    std::map<unsigned int, std::vector<double>> requests_2;
-    for (const auto &[rank, numbers] : asked)
-      for (const unsigned int i : numbers)
-        {
-          auto &request = requests_2[rank];
-          request.insert(request.end(),
-                         points[i].begin_raw(),
-                         points[i].end_raw());
-          request.push_back(least[i]);
-        }
-    std::map<unsigned int, std::vector<MasterFace<dim>>> answers;
-    for (const auto &[rank, data] :
-         Utilities::MPI::some_to_some(comm, requests_2))
-      {
-        std::vector<bool> wanted(faces.size(), false);
-        for (std::size_t i = 0; i + dim + 1 <= data.size(); i += dim + 1)
-          {
-            Point<dim> x;
-            for (unsigned int d = 0; d < dim; ++d)
-              x[d] = data[i + d];
-            for (const unsigned int f :
-                 local_mapping()->faces_within(x, data[i + dim]))
-              wanted[f] = true;
-          }
-        auto &answer = answers[rank];
-        for (unsigned int f = 0; f < faces.size(); ++f)
-          if (wanted[f])
-            answer.push_back(faces[f]);
-      }
-    std::vector<MasterFace<dim>> closest;
-    for (const auto &[rank, rank_faces] :
-         Utilities::MPI::some_to_some(comm, answers))
-      closest.insert(closest.end(), rank_faces.begin(), rank_faces.end());
-    return closest;
   }
 
 
@@ -736,4 +772,12 @@ namespace dyncontact
 
   template class ContactSetup<2>;
   template class ContactSetup<3>;
+  template std::vector<MasterFace<2>>
+  closest_faces(const std::vector<MasterFace<2>> &,
+                const std::vector<Point<2>> &,
+                const MPI_Comm);
+  template std::vector<MasterFace<3>>
+  closest_faces(const std::vector<MasterFace<3>> &,
+                const std::vector<Point<3>> &,
+                const MPI_Comm);
 } // namespace dyncontact

@@ -112,8 +112,9 @@ namespace dyncontact
     double
     distance(const Point<dim> &x) const;
 
-    /// The faces whose closest point to @p x is at most @p max_distance
-    /// away, up to round-off (1e-10 of the distance and of the face's size).
+    /// The faces whose bounding box is at most @p max_distance away from
+    /// @p x, up to round-off (1e-10 of the distance and of the face's size):
+    /// among them every face at most that far.
     std::vector<unsigned int>
     faces_within(const Point<dim> &x, const double max_distance) const;
 

@@ -27,6 +27,26 @@ namespace dyncontact
    * prm says otherwise), and the row operator that evaluates C v. A scene
    * without contact gets no rows and no search.
    */
+  /**
+   * The closest-point search at any distance: of the faces that all ranks of
+   * @p comm pass in @p faces (each its own), those on which the closest
+   * point of one of this rank's @p points may lie (every face whose bounding
+   * box is as near as the least distance, up to round-off), in rank order,
+   * so that ContactMapping::find_closest() on them finds what it would find
+   * on the whole surface. The ranks exchange one bounding box each; a point
+   * goes only to the ranks whose box is no farther than the least
+   * MINMAXDIST of the boxes (a face of that rank lies that near), which
+   * answer first with their least distance, then with their faces at the
+   * least distance over all ranks. Collective.
+   */
+  template <int dim>
+  std::vector<MasterFace<dim>>
+  closest_faces(const std::vector<MasterFace<dim>> &faces,
+                const std::vector<Point<dim>>      &points,
+                const MPI_Comm                      comm);
+
+
+
   template <int dim>
   class ContactSetup
   {
@@ -144,25 +164,6 @@ namespace dyncontact
     faces_near(const std::vector<MasterFace<dim>> &faces,
                const std::vector<Point<dim>>      &points,
                const double                        radius) const;
-
-    /**
-     * The closest-point search at any distance: of the faces that all ranks
-     * pass in @p faces (each its own), those on which the closest point of
-     * one of this rank's @p points lies (every face at the least distance,
-     * up to round-off), in rank order. Two rounds of messages to the ranks
-     * whose faces' bounding box can hold the closest point: the first
-     * returns each point's distance to their faces, the second the faces at
-     * the least distance. The only global communication is one bounding box
-     * per rank. Collective.
-     */
-    std::vector<MasterFace<dim>>
-    closest_faces(const std::vector<MasterFace<dim>> &faces,
-                  const std::vector<Point<dim>>      &points) const;
-
-    /// Every rank's bounding box of its @p faces, with the rank (ranks
-    /// without faces left out). Collective.
-    std::vector<std::pair<BoundingBox<dim>, unsigned int>>
-    rank_boxes(const std::vector<MasterFace<dim>> &faces) const;
 
     /// A locally owned slave node without a row.
     struct UnmatchedNode
