@@ -1,6 +1,7 @@
 // The distributed closest-point search (closest_faces) against the whole
 // surface: each rank holds a share of a warped master surface (2D: 16
-// segments of y = 0.3 x^2; 3D: 8 x 8 bilinear faces of z = 0.4 x y), dealt
+// segments of y = 0.3 x^2; 3D: 8 x 8 bilinear faces of z = 0.4 x y), or of
+// a flat one (a rank's bounding box then has no height), dealt
 // out like a checkerboard so that every rank's bounding box covers the whole
 // surface, or all on rank 0 with the other ranks empty. For points far and
 // near, in front of and behind the surface, beside its rim, and exactly over
@@ -23,7 +24,7 @@ using namespace dyncontact;
 
 template <int dim>
 std::vector<MasterFace<dim>>
-warped_surface()
+warped_surface(const bool flat)
 {
   std::vector<MasterFace<dim>> faces;
   if (dim == 2)
@@ -34,7 +35,7 @@ warped_surface()
           {
             Point<dim> p;
             p[0] = v / 16.;
-            p[1] = 0.3 * p[0] * p[0];
+            p[1] = flat ? 0. : 0.3 * p[0] * p[0];
             face.vertices.push_back(p);
           }
         face.cell_center = (face.vertices[0] + face.vertices[1]) / 2.;
@@ -53,7 +54,7 @@ warped_surface()
                 Point<dim> p;
                 p[0] = (i + a) / 8.;
                 p[1] = (j + b) / 8.;
-                p[2] = 0.4 * p[0] * p[1];
+                p[2] = flat ? 0. : 0.4 * p[0] * p[1];
                 face.vertices.push_back(p);
               }
           Point<dim> centre;
@@ -97,12 +98,12 @@ probe_points(const unsigned int rank)
 
 template <int dim>
 void
-check(const bool checkerboard)
+check(const bool checkerboard, const bool flat)
 {
   const MPI_Comm               comm    = MPI_COMM_WORLD;
   const unsigned int           rank    = Utilities::MPI::this_mpi_process(comm);
   const unsigned int           n_ranks = Utilities::MPI::n_mpi_processes(comm);
-  const auto                   all     = warped_surface<dim>();
+  const auto                   all     = warped_surface<dim>(flat);
   std::vector<MasterFace<dim>> mine;
   for (unsigned int f = 0; f < all.size(); ++f)
     {
@@ -132,7 +133,7 @@ check(const bool checkerboard)
   images = Utilities::MPI::sum(images, comm);
   const unsigned int n_points =
     Utilities::MPI::sum<unsigned int>(points.size(), comm);
-  testing::log() << dim << "D, "
+  testing::log() << dim << "D, " << (flat ? "flat, " : "warped, ")
                  << (checkerboard ? "faces dealt out like a checkerboard" :
                                     "all faces on rank 0")
                  << ": " << n_points << " points, " << images
@@ -147,9 +148,10 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  for (const bool checkerboard : {true, false})
-    {
-      check<2>(checkerboard);
-      check<3>(checkerboard);
-    }
+  for (const bool flat : {false, true})
+    for (const bool checkerboard : {true, false})
+      {
+        check<2>(checkerboard, flat);
+        check<3>(checkerboard, flat);
+      }
 }

@@ -142,14 +142,20 @@ namespace dyncontact
                         std::back_inserter(nearest));
         if (nearest.empty())
           break; // no rank has faces
-        double bound = min_max_distance(nearest[0].first, x);
+        // MINMAXDIST with a margin for round-off (relative to the distance
+        // and to the box: a point on a degenerate box, a flat surface)
+        auto bound_of = [&x](const BoundingBox<dim> &box) {
+          const auto [lower, upper] = box.get_boundary_points();
+          return min_max_distance(box, x) * (1. + 1e-12) +
+                 1e-12 * lower.distance(upper);
+        };
+        double bound = bound_of(nearest[0].first);
         std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
         rank_tree.query(boost::geometry::index::intersects(
                           search_box(x, bound)),
                         std::back_inserter(hits));
         for (const auto &hit : hits)
-          bound = std::min(bound, min_max_distance(hit.first, x));
-        bound = bound * (1. + 1e-12);
+          bound = std::min(bound, bound_of(hit.first));
         for (const auto &hit : hits)
           if (box_distance(hit.first, x) <= bound)
             {
