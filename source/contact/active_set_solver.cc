@@ -6,6 +6,8 @@
 
 #include <dyncontact/contact/active_set_solver.h>
 
+#include <Epetra_MultiVector.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -141,6 +143,16 @@ namespace dyncontact
                       "master body): reject it with a message, or project "
                       "the initial displacement onto K_h (the M-projection) "
                       "with a warning that says by how much.");
+    prm.declare_entry(
+      "AMG near null space",
+      "translations",
+      Patterns::Selection("translations|rigid body motions"),
+      "The near-null space the algebraic multigrid preconditioner of the "
+      "displacement systems is built on: the rigid translations only, or "
+      "all rigid body motions (the translations and the infinitesimal "
+      "rotations about the origin, 1 in 2D, 3 in 3D). The rotations help "
+      "where the stiffness dominates the system (static problems, large "
+      "time steps).");
     prm.leave_subsection();
   }
 
@@ -152,6 +164,7 @@ namespace dyncontact
     linear_tolerance      = prm.get_double("Linear solver tolerance");
     max_linear_iterations = prm.get_integer("Maximum linear iterations");
     project_initial_penetration = (prm.get("Initial penetration") == "project");
+    amg_rotations = (prm.get("AMG near null space") == "rigid body motions");
     prm.leave_subsection();
     AssertThrow(linear_tolerance > 0. && linear_tolerance < 1.,
                 ExcMessage("Contact solver/Linear solver tolerance must lie in "
@@ -209,10 +222,36 @@ namespace dyncontact
     // every coupling and fell back to one level, a direct solve of the
     // whole matrix (3D bar, 5e4 DoFs: 10 s set-up instead of 0.3 s)
     data.aggregation_threshold = 0.;
-    data.constant_modes        = constant_modes;
+    if (near_null_space != nullptr)
+      data.constant_modes = near_null_space->translations;
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(preconditioner_matrix ? *preconditioner_matrix : matrix,
-                    data);
+    const MatrixType &amg_matrix =
+      preconditioner_matrix ? *preconditioner_matrix : matrix;
+    if (near_null_space == nullptr || near_null_space->rotations.empty())
+      amg->initialize(amg_matrix, data);
+    else
+      {
+        // the translations as deal.II passes them to ML, then the rotations
+        // (ML reads the vectors during initialize())
+        Teuchos::ParameterList              list;
+        std::unique_ptr<Epetra_MultiVector> translations;
+        data.set_parameters(list, translations, amg_matrix);
+        const auto        &rotations      = near_null_space->rotations;
+        const int          n_translations = data.constant_modes.size();
+        Epetra_MultiVector modes(
+          amg_matrix.trilinos_matrix().OperatorDomainMap(),
+          n_translations + rotations.size());
+        for (int m = 0; m < n_translations; ++m)
+          for (int i = 0; i < modes.MyLength(); ++i)
+            modes[m][i] = (*translations)[m][i];
+        for (unsigned int r = 0; r < rotations.size(); ++r)
+          for (int i = 0; i < modes.MyLength(); ++i)
+            modes[n_translations + r][i] = rotations[r].trilinos_vector()[0][i];
+        list.set("null space: type", "pre-computed");
+        list.set("null space: dimension", modes.NumVectors());
+        list.set("null space: vectors", modes.Values());
+        amg->initialize(amg_matrix, list);
+      }
   }
 
 

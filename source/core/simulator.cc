@@ -191,6 +191,10 @@ namespace dyncontact
     TimerOutput::Scope t(*timer, "setup");
     if (integrator)
       n_step_matrices += integrator->get_operators().n_step_matrices_built;
+    ActiveSetSolver::NearNullSpace near_null_space;
+    near_null_space.translations = system->get_constant_modes();
+    if (solver_parameters.amg_rotations)
+      near_null_space.rotations = system->rotation_modes();
     integrator =
       std::make_unique<TimeIntegrator>(scheme,
                                        control.get_timestep(),
@@ -200,7 +204,7 @@ namespace dyncontact
                                        system->locally_relevant_dofs(),
                                        system->get_constraints(),
                                        contact->get_rows(),
-                                       system->get_constant_modes(),
+                                       near_null_space,
                                        comm);
     // the estimates refer to the old mesh
     step_size_control->reset();

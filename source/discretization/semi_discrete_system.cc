@@ -670,6 +670,48 @@ namespace dyncontact
                            std::to_string(error) + ")"));
   }
 
+  template <int dim>
+  std::vector<VectorType>
+  SemiDiscreteSystem<dim>::rotation_modes() const
+  {
+    std::vector<VectorType> modes(dim == 2 ? 1 : 3,
+                                  VectorType(locally_owned, comm));
+    const Quadrature<dim> support_points(fe.get_unit_support_points());
+    FEValues<dim> values(mapping, fe, support_points, update_quadrature_points);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (locally_owned.is_element(dofs[i]))
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                const Point<dim>  &x = values.quadrature_point(i);
+                auto               coordinate = [&](const unsigned int j) {
+                  return j < dim ? x[j] : 0.;
+                };
+                // e_axis x x = x_a e_b - x_b e_a, (axis, a, b) cyclic; the
+                // axis is z in 2D, and x, y, z in 3D
+                for (unsigned int k = 0; k < modes.size(); ++k)
+                  {
+                    const unsigned int axis = (dim == 2) ? 2 : k;
+                    const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
+                    const double       value = (c == b) ? coordinate(a) :
+                                               (c == a) ? -coordinate(b) :
+                                                          0.;
+                    modes[k](dofs[i])        = value;
+                  }
+              }
+        }
+    for (auto &mode : modes)
+      mode.compress(VectorOperation::insert);
+    return modes;
+  }
+
+
+
   template class SemiDiscreteSystem<2>;
   template class SemiDiscreteSystem<3>;
 } // namespace dyncontact

@@ -19,7 +19,7 @@ namespace dyncontact
     const IndexSet                       &locally_relevant,
     const AffineConstraints<double>      &mesh_constraints,
     const ContactRows                    &rows,
-    const std::vector<std::vector<bool>> &constant_modes,
+    const ActiveSetSolver::NearNullSpace &near_null_space,
     const MPI_Comm                        comm)
     : displacement_active(rows.size(), 0)
     , projection_active(rows.size(), 0)
@@ -29,17 +29,22 @@ namespace dyncontact
     , locally_owned(locally_owned)
     , locally_relevant(locally_relevant)
     , mesh_constraints(&mesh_constraints)
-    , constant_modes(constant_modes)
+    , near_null_space(near_null_space)
     , comm(comm)
     , projection_solver(solver_parameters, comm)
     , rows(&rows)
   {
     if (is_static)
       {
-        // H = A; AMG gets A + eps M, which stays SPD without Dirichlet data
+        // H = A; AMG gets A + eps M, which stays SPD without Dirichlet data.
+        // A body held only by the contact rows is free in A: the smaller
+        // eps, the larger AMG's inverse along its rigid motion, which the
+        // condensed operator does not have. 3D ball on block, static, 18e3
+        // and 96e3 DoFs: 2366 and 3304 CG iterations at eps = 1e-6, 1020
+        // and 1390 at 1e-2, 2010 at 1e-1 (96e3).
         preconditioner_matrix.copy_from(*system.A);
         system.add_mass(preconditioner_matrix,
-                        1e-6 * system.A->linfty_norm() /
+                        1e-2 * system.A->linfty_norm() /
                           system.mass_linfty_norm());
         // start with every row active: the bodies are held by the contact
         displacement_active.assign(rows.size(), 1);
@@ -67,7 +72,7 @@ namespace dyncontact
     ActiveSetSolver &solver = *step_matrix->solver;
     MatrixType      &S      = step_matrix->S;
     solver.reinit(locally_owned, locally_relevant, *mesh_constraints, *rows);
-    solver.set_constant_modes(constant_modes);
+    solver.set_near_null_space(near_null_space);
     if (is_static)
       {
         S.copy_from(*system.A);
@@ -392,7 +397,7 @@ namespace dyncontact
     const IndexSet                       &locally_relevant,
     const AffineConstraints<double>      &mesh_constraints,
     const ContactRows                    &rows,
-    const std::vector<std::vector<bool>> &constant_modes,
+    const ActiveSetSolver::NearNullSpace &near_null_space,
     const MPI_Comm                        comm)
     : scheme(scheme)
     , operators(scheme.is_static,
@@ -403,7 +408,7 @@ namespace dyncontact
                 locally_relevant,
                 mesh_constraints,
                 rows,
-                constant_modes,
+                near_null_space,
                 comm)
     , comm(comm)
   {}

@@ -112,6 +112,9 @@ namespace dyncontact
       /// An initially penetrating configuration: rejected, or projected
       /// onto K_h with a warning.
       bool project_initial_penetration = false;
+      /// AMG's near-null space: the rigid translations only, or also the
+      /// infinitesimal rotations.
+      bool amg_rotations = false;
 
       /// Declares subsection "Contact solver".
       static void
@@ -192,12 +195,24 @@ namespace dyncontact
     void
     set_diagonal_matrix(const VectorType &diagonal);
 
-    /// The rigid translations (per component, locally owned DoFs), given to
-    /// AMG as near-null-space; call before set_matrix().
-    void
-    set_constant_modes(const std::vector<std::vector<bool>> &modes)
+    /**
+     * AMG's near-null space: the rigid translations (per component, whether
+     * a locally owned DoF belongs to it, as DoFTools::extract_constant_modes
+     * gives them) and, if not empty, the infinitesimal rotations (their
+     * values at the locally owned DoFs).
+     */
+    struct NearNullSpace
     {
-      constant_modes = modes;
+      std::vector<std::vector<bool>> translations;
+      std::vector<VectorType>        rotations;
+    };
+
+    /// Sets AMG's near-null space (kept by reference: @p modes must outlive
+    /// this solver); call before set_matrix().
+    void
+    set_near_null_space(const NearNullSpace &modes)
+    {
+      near_null_space = &modes;
     }
 
     /**
@@ -267,9 +282,9 @@ namespace dyncontact
 
     /// Work vectors of the condensed operator, made once per mesh: T x, and
     /// the additions of T^T to entries owned elsewhere (writable ghosts).
-    mutable VectorType                                 Tx;
-    mutable VectorType                                 additions;
-    std::vector<std::vector<bool>>                     constant_modes;
+    mutable VectorType   Tx;
+    mutable VectorType   additions;
+    const NearNullSpace *near_null_space = nullptr;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
   };
 } // namespace dyncontact

@@ -271,6 +271,11 @@ namespace dyncontact
     {
       return constant_modes;
     }
+    /// The infinitesimal rigid rotations about the origin (1 in 2D, 3 in
+    /// 3D: e_k x x at each DoF's support point), for AMG's near-null space;
+    /// computed on each call.
+    std::vector<VectorType>
+    rotation_modes() const;
     /// Component-0 system DoF -> scalar DoF, for the nodes owned here.
     const std::map<types::global_dof_index, types::global_dof_index> &
     get_owned_system0_to_scalar() const

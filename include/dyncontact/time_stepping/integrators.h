@@ -73,7 +73,7 @@ namespace dyncontact
                   const IndexSet                       &locally_relevant,
                   const AffineConstraints<double>      &mesh_constraints,
                   const ContactRows                    &rows,
-                  const std::vector<std::vector<bool>> &constant_modes,
+                  const ActiveSetSolver::NearNullSpace &near_null_space,
                   const MPI_Comm                        comm);
 
     double
@@ -181,7 +181,7 @@ namespace dyncontact
     const IndexSet                    locally_relevant;
     /// (must outlive the operators, as the system matrices and rows)
     const AffineConstraints<double>     *mesh_constraints;
-    const std::vector<std::vector<bool>> constant_modes;
+    const ActiveSetSolver::NearNullSpace near_null_space;
     const MPI_Comm                       comm;
     /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
     MatrixType preconditioner_matrix;
@@ -249,7 +249,7 @@ namespace dyncontact
                    const IndexSet                       &locally_relevant,
                    const AffineConstraints<double>      &mesh_constraints,
                    const ContactRows                    &rows,
-                   const std::vector<std::vector<bool>> &constant_modes,
+                   const ActiveSetSolver::NearNullSpace &near_null_space,
                    const MPI_Comm                        comm);
 
     /// The initial velocity of the scheme (N-CS++: eq. 12c; the others keep
