@@ -133,6 +133,37 @@ namespace dyncontact
 
 
   template <int dim>
+  BoundingBox<dim>
+  search_box(const Point<dim> &x, const double radius)
+  {
+    Point<dim> lower = x, upper = x;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] -= radius;
+        upper[d] += radius;
+      }
+    return BoundingBox<dim>(std::make_pair(lower, upper));
+  }
+
+
+
+  template <int dim>
+  double
+  box_distance(const BoundingBox<dim> &box, const Point<dim> &x)
+  {
+    const auto [lower, upper] = box.get_boundary_points();
+    double squared            = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double outside = std::max({lower[d] - x[d], x[d] - upper[d], 0.});
+        squared += outside * outside;
+      }
+    return std::sqrt(squared);
+  }
+
+
+
+  template <int dim>
   struct ContactMapping<dim>::Tree
   {
     RTree<std::pair<BoundingBox<dim>, unsigned int>> rtree;
@@ -240,16 +271,9 @@ namespace dyncontact
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
     tree->rtree.query(boost::geometry::index::nearest(x, 1),
                       std::back_inserter(nearest));
-    best             = face_distance(nearest[0].second);
-    Point<dim> lower = x, upper = x;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] -= best;
-        upper[d] += best;
-      }
+    best = face_distance(nearest[0].second);
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> candidates;
-    tree->rtree.query(boost::geometry::index::intersects(
-                        BoundingBox<dim>(std::make_pair(lower, upper))),
+    tree->rtree.query(boost::geometry::index::intersects(search_box(x, best)),
                       std::back_inserter(candidates));
     for (const auto &candidate : candidates)
       best = std::min(best, face_distance(candidate.second));
@@ -267,31 +291,16 @@ namespace dyncontact
     if (master_faces.empty())
       return within;
     const double reach = max_distance * (1. + 1e-10) + 1e-10 * max_face_size;
-    Point<dim>   lower = x, upper = x;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] -= reach;
-        upper[d] += reach;
-      }
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> candidates;
-    tree->rtree.query(boost::geometry::index::intersects(
-                        BoundingBox<dim>(std::make_pair(lower, upper))),
+    tree->rtree.query(boost::geometry::index::intersects(search_box(x, reach)),
                       std::back_inserter(candidates));
     // by the distance to the face's bounding box, a lower bound of the
     // distance to the face: a projection that stops short on a warped face
     // cannot drop a face that holds the closest point
     for (const auto &candidate : candidates)
       {
-        const auto &[low, high] = candidate.first.get_boundary_points();
-        double squared          = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double outside =
-              std::max({low[d] - x[d], x[d] - high[d], 0.});
-            squared += outside * outside;
-          }
         const auto &vertices = master_faces[candidate.second].vertices;
-        if (std::sqrt(squared) <=
+        if (box_distance(candidate.first, x) <=
             max_distance * (1. + 1e-10) +
               1e-10 * vertices[0].distance(vertices.back()))
           within.push_back(candidate.second);
@@ -307,15 +316,9 @@ namespace dyncontact
   ContactMapping<dim>::closest_image(const Point<dim> &x,
                                      const double      max_distance) const
   {
-    Point<dim> lower = x, upper = x;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] -= max_distance;
-        upper[d] += max_distance;
-      }
-    const BoundingBox<dim> box(std::make_pair(lower, upper));
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> candidates;
-    tree->rtree.query(boost::geometry::index::intersects(box),
+    tree->rtree.query(boost::geometry::index::intersects(
+                        search_box(x, max_distance)),
                       std::back_inserter(candidates));
 
     std::optional<Image<dim>> best;
@@ -404,6 +407,14 @@ namespace dyncontact
     return row;
   }
 
+  template BoundingBox<2>
+  search_box(const Point<2> &, const double);
+  template BoundingBox<3>
+  search_box(const Point<3> &, const double);
+  template double
+  box_distance(const BoundingBox<2> &, const Point<2> &);
+  template double
+  box_distance(const BoundingBox<3> &, const Point<3> &);
   template Point<1>
   closest_point_on_face<2>(const std::vector<Point<2>> &,
                            const Point<2> &,

@@ -19,40 +19,6 @@ namespace dyncontact
 {
   namespace
   {
-    /// The box of half-width @p radius around @p x.
-    template <int dim>
-    BoundingBox<dim>
-    search_box(const Point<dim> &x, const double radius)
-    {
-      Point<dim> lower = x, upper = x;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] -= radius;
-          upper[d] += radius;
-        }
-      return BoundingBox<dim>(std::make_pair(lower, upper));
-    }
-
-
-
-    /// The Euclidean distance from @p x to @p box (0 inside).
-    template <int dim>
-    double
-    box_distance(const BoundingBox<dim> &box, const Point<dim> &x)
-    {
-      const auto [lower, upper] = box.get_boundary_points();
-      double squared            = 0.;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double outside =
-            std::max({lower[d] - x[d], x[d] - upper[d], 0.});
-          squared += outside * outside;
-        }
-      return std::sqrt(squared);
-    }
-
-
-
     /// MINMAXDIST (Roussopoulos et al. 1995): every face of the bounding
     /// box of a set of faces' vertices touches a vertex, so some face lies
     /// at most this far from @p x.
@@ -118,6 +84,32 @@ namespace dyncontact
             result.emplace_back(std::make_pair(lower, upper), rank);
           }
       return result;
+    }
+
+
+
+    /// Sends every rank of @p wanted the @p faces it marks (in this rank's
+    /// order) and returns what this rank receives, in rank order.
+    /// Collective.
+    template <int dim>
+    std::vector<MasterFace<dim>>
+    exchange_faces(const std::vector<MasterFace<dim>>              &faces,
+                   const std::map<unsigned int, std::vector<bool>> &wanted,
+                   const MPI_Comm                                   comm)
+    {
+      std::map<unsigned int, std::vector<MasterFace<dim>>> answers;
+      for (const auto &[rank, marked] : wanted)
+        {
+          auto &answer = answers[rank];
+          for (unsigned int f = 0; f < faces.size(); ++f)
+            if (marked[f])
+              answer.push_back(faces[f]);
+        }
+      std::vector<MasterFace<dim>> received;
+      for (const auto &[rank, rank_faces] :
+           Utilities::MPI::some_to_some(comm, answers))
+        received.insert(received.end(), rank_faces.begin(), rank_faces.end());
+      return received;
     }
   } // namespace
 
@@ -196,25 +188,18 @@ namespace dyncontact
     for (const auto &[rank, numbers] : asked)
       for (const unsigned int i : numbers)
         least_sent[rank].push_back(least[i]);
-    std::map<unsigned int, std::vector<MasterFace<dim>>> answers;
+    std::map<unsigned int, std::vector<bool>> wanted;
     for (const auto &[rank, bounds] :
          Utilities::MPI::some_to_some(comm, least_sent))
       {
-        std::vector<bool> wanted(faces.size(), false);
-        const auto       &x = received_points[rank];
+        auto &marked = wanted[rank];
+        marked.assign(faces.size(), false);
+        const auto &x = received_points[rank];
         for (unsigned int k = 0; k < bounds.size(); ++k)
           for (const unsigned int f : local->faces_within(x[k], bounds[k]))
-            wanted[f] = true;
-        auto &answer = answers[rank];
-        for (unsigned int f = 0; f < faces.size(); ++f)
-          if (wanted[f])
-            answer.push_back(faces[f]);
+            marked[f] = true;
       }
-    std::vector<MasterFace<dim>> closest;
-    for (const auto &[rank, rank_faces] :
-         Utilities::MPI::some_to_some(comm, answers))
-      closest.insert(closest.end(), rank_faces.begin(), rank_faces.end());
-    return closest;
+    return exchange_faces(faces, wanted, comm);
   }
 
 
@@ -663,7 +648,7 @@ namespace dyncontact
 
     // 3. each rank answers with its faces whose box meets a requested
     // point's search box, in its own order
-    std::map<unsigned int, std::vector<MasterFace<dim>>> answers;
+    std::map<unsigned int, std::vector<bool>> wanted;
     if (!received.empty())
       {
         std::vector<std::pair<BoundingBox<dim>, unsigned int>> face_boxes;
@@ -672,7 +657,8 @@ namespace dyncontact
         const auto tree = pack_rtree(face_boxes);
         for (const auto &[rank, coordinates] : received)
           {
-            std::vector<bool> wanted(faces.size(), false);
+            auto &marked = wanted[rank];
+            marked.assign(faces.size(), false);
             for (std::size_t i = 0; i + dim <= coordinates.size(); i += dim)
               {
                 Point<dim> x;
@@ -683,21 +669,13 @@ namespace dyncontact
                              search_box(x, radius)),
                            std::back_inserter(hits));
                 for (const auto &hit : hits)
-                  wanted[hit.second] = true;
+                  marked[hit.second] = true;
               }
-            auto &answer = answers[rank];
-            for (unsigned int f = 0; f < faces.size(); ++f)
-              if (wanted[f])
-                answer.push_back(faces[f]);
           }
       }
     // 4. the faces near this rank's points, in rank order (as if the
     // whole surface had been gathered and then filtered)
-    std::vector<MasterFace<dim>> near;
-    for (const auto &[rank, rank_faces] :
-         Utilities::MPI::some_to_some(comm, answers))
-      near.insert(near.end(), rank_faces.begin(), rank_faces.end());
-    return near;
+    return exchange_faces(faces, wanted, comm);
   }
 
 

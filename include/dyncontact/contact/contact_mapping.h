@@ -78,6 +78,16 @@ namespace dyncontact
   /// Closest point of @p x on one bilinear face (segment in 2D): returns the
   /// reference point and, in @p clamped_sides, which sides of the unit cell
   /// the point is clamped to (2D: vertex 0, 1; 3D: xi=0, xi=1, eta=0, eta=1).
+  /// The box of half-width @p radius around @p x.
+  template <int dim>
+  BoundingBox<dim>
+  search_box(const Point<dim> &x, const double radius);
+
+  /// The Euclidean distance from @p x to @p box (0 inside).
+  template <int dim>
+  double
+  box_distance(const BoundingBox<dim> &box, const Point<dim> &x);
+
   template <int dim>
   Point<dim - 1>
   closest_point_on_face(const std::vector<Point<dim>> &vertices,
