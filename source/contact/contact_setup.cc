@@ -160,9 +160,13 @@ namespace dyncontact
 
     // 2. each rank answers with the distance to its closest face, and keeps
     // the points for step 3
+    // (built only on a rank that is asked)
     std::unique_ptr<ContactMapping<dim>> local;
-    if (!faces.empty())
-      local = std::make_unique<ContactMapping<dim>>(faces, 0.);
+    auto                                 local_mapping = [&]() {
+      if (!local)
+        local = std::make_unique<ContactMapping<dim>>(faces, 0.);
+      return local.get();
+    };
     std::map<unsigned int, std::vector<Point<dim>>> received_points;
     std::map<unsigned int, std::vector<double>>     distances;
     for (const auto &[rank, coordinates] :
@@ -173,7 +177,7 @@ namespace dyncontact
           for (unsigned int d = 0; d < dim; ++d)
             x[d] = coordinates[i + d];
           received_points[rank].push_back(x);
-          distances[rank].push_back(local->distance(x));
+          distances[rank].push_back(local_mapping()->distance(x));
         }
     std::vector<double> least(points.size(),
                               std::numeric_limits<double>::infinity());
@@ -196,7 +200,8 @@ namespace dyncontact
         marked.assign(faces.size(), false);
         const auto &x = received_points[rank];
         for (unsigned int k = 0; k < bounds.size(); ++k)
-          for (const unsigned int f : local->faces_within(x[k], bounds[k]))
+          for (const unsigned int f :
+               local_mapping()->faces_within(x[k], bounds[k]))
             marked[f] = true;
       }
     return exchange_faces(faces, wanted, comm);
