@@ -219,7 +219,9 @@ namespace dyncontact
                       Patterns::Selection("auto|1|2"),
                       "Two-body scenes: which side of the contact pair is the "
                       "slave (its nodes carry the constraint rows): auto (the "
-                      "finer side, by mean face size), 1 or 2.");
+                      "scene's choice if it makes one, as the Hertz scenes "
+                      "with 'Block mesh = matched' do, else the finer side, "
+                      "by mean face size), 1 or 2.");
     prm.declare_entry("Search radius",
                       "0",
                       Patterns::Double(0.),

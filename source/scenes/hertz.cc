@@ -74,6 +74,21 @@ namespace dyncontact
       "block: every row's normal is then vertical, and the nodal pressures "
       "oscillate less than against a polygonal curved master surface "
       "(doc/results.md, Hertz).");
+    prm.declare_entry(
+      "Block mesh",
+      "uniform",
+      Patterns::Selection("uniform|matched"),
+      "Coarse cells of the block along its top. 'uniform': cells of about "
+      "R/2. 'matched': the first cell from the plane(s) of symmetry is "
+      "pi R/4 wide, the arc of the curved body's coarse surface cell at its "
+      "lowest point, the others about R/2; refined as often as the curved "
+      "body (no 'Extra refinements of the curved body'), the block's top "
+      "nodes then lie under the curved body's surface nodes, to within "
+      "r^3/(6 R^2) at a distance r from the axis, so that the collocation "
+      "of the slave nodes on the master surface is nearly node to node and "
+      "the nodal pressures do not oscillate (doc/results.md, Hertz). The "
+      "curved body is then the slave unless 'Contact/Slave side' says "
+      "otherwise.");
     prm.declare_entry("Initial gap",
                       "0.1",
                       Patterns::Double(),
@@ -107,6 +122,7 @@ namespace dyncontact
     initial_gap         = prm.get_double("Initial gap");
     contact_refinements = prm.get_integer("Contact zone refinements");
     extra_refinements = prm.get_integer("Extra refinements of the curved body");
+    matched_block_mesh = (prm.get("Block mesh") == "matched");
     prm.leave_subsection();
     prm.leave_subsection();
     const std::string where = "Scene/" + subsection + "/";
@@ -178,14 +194,30 @@ namespace dyncontact
 
 
   template <int dim>
+  std::vector<double>
+  HertzScene<dim>::block_column_widths() const
+  {
+    // (the block width exceeds the radius, hence pi R/4 as well)
+    const double first = matched_block_mesh ? M_PI / 4. * radius : 0.;
+    const double rest  = block_width - first;
+    const auto   n_rest =
+      std::max<unsigned int>(1, std::lround(2. * rest / radius));
+    std::vector<double> widths(first > 0. ? 1 : 0, first);
+    widths.resize(widths.size() + n_rest, rest / n_rest);
+    return widths;
+  }
+
+
+
+  template <int dim>
   double
   HertzScene<dim>::n_coarse_cells() const
   {
-    double block = 1.;
-    for (unsigned int d = 0; d < dim; ++d)
-      block *= std::max(1.,
-                        std::round(2. * (d == 1 ? block_depth : block_width) /
-                                   radius));
+    const double columns = block_column_widths().size();
+    double       block =
+      std::max(1., std::round(2. * block_depth / radius)) * columns;
+    if (dim == 3)
+      block *= columns;
     return (dim == 2 ? 3. : 4.) + block;
   }
 
@@ -210,19 +242,35 @@ namespace dyncontact
       },
       body);
 
-    // the block [0, W] x [-D, 0] (x [0, W]), cells of about R/2
-    Triangulation<dim, dim>   block;
-    std::vector<unsigned int> repetitions(dim);
-    Point<dim>                lower, upper;
+    // the block [0, W] x [-D, 0] (x [0, W]), cells of about R/2 (matched:
+    // the first column pi R/4 wide)
+    Triangulation<dim, dim>          block;
+    std::vector<std::vector<double>> step_sizes(dim);
+    std::vector<unsigned int>        repetitions(dim);
+    Point<dim>                       lower, upper;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        const double extent = (d == 1) ? block_depth : block_width;
-        repetitions[d] =
-          std::max<unsigned int>(1, std::lround(2. * extent / radius));
-        lower[d] = (d == 1) ? -block_depth : 0.;
-        upper[d] = (d == 1) ? 0. : block_width;
+        step_sizes[d] = block_column_widths();
+        if (d == 1)
+          {
+            const auto n =
+              std::max<unsigned int>(1, std::lround(2. * block_depth / radius));
+            step_sizes[d].assign(n, block_depth / n);
+          }
+        repetitions[d] = step_sizes[d].size();
+        lower[d]       = (d == 1) ? -block_depth : 0.;
+        upper[d]       = (d == 1) ? 0. : block_width;
       }
-    GridGenerator::subdivided_hyper_rectangle(block, repetitions, lower, upper);
+    if (matched_block_mesh)
+      GridGenerator::subdivided_hyper_rectangle(block,
+                                                step_sizes,
+                                                lower,
+                                                upper);
+    else
+      GridGenerator::subdivided_hyper_rectangle(block,
+                                                repetitions,
+                                                lower,
+                                                upper);
 
     merge_bodies<dim>({&body, &block}, tria);
 
@@ -305,6 +353,10 @@ namespace dyncontact
     pair.first_side    = {curved_id};
     pair.second_side   = {block_top_id};
     pair.search_radius = initial_gap + 0.5 * radius;
+    // on the matched block mesh the curved body is the slave (the default
+    // choice, the finer side by mean face size, may take the block)
+    if (matched_block_mesh)
+      pair.slave_side = 0;
 
     return {pair};
   }

@@ -101,6 +101,12 @@ namespace dyncontact
     double       initial_gap;
     unsigned int contact_refinements;
     unsigned int extra_refinements;
+    bool         matched_block_mesh;
+
+    /// Widths of the block's coarse cells along the top, from the plane of
+    /// symmetry to the block's width (m).
+    std::vector<double>
+    block_column_widths() const;
   };
 
   /// The 2D scene "hertz": a half-cylinder on a block.
