@@ -7,6 +7,7 @@
 #include <dyncontact/contact/active_set_solver.h>
 #include <dyncontact/contact/contact_mapping.h>
 #include <dyncontact/contact/contact_rows.h>
+#include <dyncontact/contact/contact_search.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
 
@@ -27,26 +28,6 @@ namespace dyncontact
    * prm says otherwise), and the row operator that evaluates C v. A scene
    * without contact gets no rows and no search.
    */
-  /**
-   * The closest-point search at any distance: of the faces that all ranks of
-   * @p comm pass in @p faces (each its own), those on which the closest
-   * point of one of this rank's @p points may lie (every face whose bounding
-   * box is as near as the least distance, up to round-off), in rank order,
-   * so that ContactMapping::find_closest() on them finds what it would find
-   * on the whole surface. The ranks exchange one bounding box each; a point
-   * goes only to the ranks whose box is no farther than the least
-   * MINMAXDIST of the boxes (a face of that rank lies that near), which
-   * answer first with their least distance, then with their faces at the
-   * least distance over all ranks. Collective.
-   */
-  template <int dim>
-  std::vector<MasterFace<dim>>
-  closest_faces(const std::vector<MasterFace<dim>> &faces,
-                const std::vector<Point<dim>>      &points,
-                const MPI_Comm                      comm);
-
-
-
   template <int dim>
   class ContactSetup
   {
@@ -151,19 +132,6 @@ namespace dyncontact
     local_faces(const SemiDiscreteSystem<dim>         &system,
                 const std::vector<types::boundary_id> &ids,
                 const std::vector<types::boundary_id> &symmetry_ids) const;
-
-    /**
-     * The parallel contact search: of the faces that all ranks pass in
-     * @p faces (each its own), those whose bounding box meets the box of
-     * half-width @p radius around one of this rank's @p points, in rank
-     * order. Every rank sends its points only to the ranks whose faces'
-     * bounding box they meet, and gets back only the faces near them; the
-     * only global communication is one bounding box per rank. Collective.
-     */
-    std::vector<MasterFace<dim>>
-    faces_near(const std::vector<MasterFace<dim>> &faces,
-               const std::vector<Point<dim>>      &points,
-               const double                        radius) const;
 
     /// A locally owned slave node without a row.
     struct UnmatchedNode
