@@ -543,29 +543,32 @@ main(int argc, char **argv)
                  !fs::exists("stale/.lock"))
         << "\n";
 
-  // free flight of a bar with mu_v = 1e12 Pa s and E = 1 Pa: with a loose CG
-  // tolerance, relative to a matrix dominated by tau/2 B, the energy grows
-  std::ofstream("viscous.prm")
-    << base << "set Output directory = viscous\n"
-    << "subsection Material\n  set Viscous shear modulus = 1e12\nend\n"
-    << bar("    set Initial gap = 10\n")
+  // the bar impact to t = 1 s: with a loose CG tolerance the energy grows
+  // (by 30% in a step; which steps and by how much is the solver's
+  // round-off), which the energy monitor must report; with a tight one the
+  // balance holds (Theorem 3.2)
+  const std::string impact = "subsection Time integration\n"
+                             "  set End time = 1\nend\n";
+  std::ofstream("loose.prm")
+    << base << "set Output directory = loose\n"
+    << impact
     << "subsection Contact solver\n  set Linear solver tolerance = 1e-2\nend\n";
-  const Outcome viscous = run_program("viscous.prm");
+  const Outcome loose = run_program("loose.prm");
   log() << "energy growth from a loose solver tolerance is reported: "
-        << check(viscous.status == 0 &&
-                 viscous.text.find("which Theorem 3.2 excludes") !=
+        << check(loose.status == 0 &&
+                 loose.text.find("which Theorem 3.2 excludes") !=
                    std::string::npos)
         << "\n";
-  std::ofstream("viscous_tight.prm")
-    << base << "set Output directory = viscous_tight\n"
-    << "subsection Material\n  set Viscous shear modulus = 1e12\nend\n"
-    << bar("    set Initial gap = 10\n")
+  std::ofstream("tight.prm")
+    << base << "set Output directory = tight\n"
+    << impact
     << "subsection Contact solver\n  set Linear solver tolerance = 1e-14\nend\n";
-  const Outcome tight = run_program("viscous_tight.prm");
+  const Outcome tight = run_program("tight.prm");
   log() << "with a tight tolerance the balance holds (no warning): "
         << check(tight.status == 0 &&
                  tight.text.find("which Theorem 3.2 excludes") ==
-                   std::string::npos)
+                   std::string::npos &&
+                 tight.text.find("Theorem 3.2 held") != std::string::npos)
         << "\n";
 
   // at the default tolerance the step matrix itself cannot hold the mass
@@ -578,9 +581,9 @@ main(int argc, char **argv)
   const Outcome drowned = run_program("viscous_default.prm");
   const auto    momentum =
     column_values("viscous_default/statistics.tsv", "momentum_x");
-  log() << "momentum drifts (" << testing::fmt(momentum.front(), 2) << " -> "
-        << testing::fmt(momentum.back(), 2)
-        << ") and a warning says that S holds the mass only to about 1e-2: "
+  // (by how much, and in which direction, is round-off)
+  log() << "momentum drifts by more than 0.1% and a warning says that S "
+        << "holds the mass only to about 1e-2: "
         << check(drowned.status == 0 &&
                  std::abs(momentum.back() / momentum.front() - 1.) > 1e-3 &&
                  drowned.text.find("outweigh the mass") != std::string::npos)

@@ -250,25 +250,33 @@ namespace dyncontact
           }
       }
 
+    // Every shape function of FE_Q<dim>^dim is a scalar shape function
+    // phi_k of FE_Q times a unit vector e_c, so the element matrices follow
+    // from the scalar values and gradients (a third of the work of the
+    // vector element's FEValues): with H^ab_kl = int d_a phi_k d_b phi_l,
+    //   2 mu eps(phi_k e_c) : eps(phi_l e_d) = mu (delta_cd sum_a H^aa_kl
+    //                                              + H^dc_kl),
+    //   div(phi_k e_c) div(phi_l e_d)        = H^cd_kl.
     FEValues<dim>     fe_values(mapping,
-                            fe,
+                            scalar_fe,
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values);
     FEValues<dim>     mass_values(mapping,
-                              fe,
+                              scalar_fe,
                               mass_quadrature,
                               update_values | update_JxW_values);
     FEFaceValues<dim> face_values(mapping,
-                                  fe,
+                                  scalar_fe,
                                   face_quadrature,
                                   update_values | update_JxW_values);
     FEFaceValues<dim> lumped_face_values(mapping,
-                                         fe,
+                                         scalar_fe,
                                          lumped_face_quadrature,
                                          update_values | update_JxW_values);
 
     const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int  n_nodes       = scalar_fe.n_dofs_per_cell();
     std::vector<double> bad_cell; // centre and body of an inverted cell
     FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
     FullMatrix<double>  cell_stiffness(dofs_per_cell, dofs_per_cell);
@@ -278,9 +286,19 @@ namespace dyncontact
     Vector<double>      cell_boundary_weights(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
 
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
-    std::vector<double>                  div(dofs_per_cell);
+    // component and scalar shape function of each shape function
+    std::vector<unsigned int> component(dofs_per_cell), node(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      {
+        component[i] = fe.system_to_component_index(i).first;
+        node[i]      = fe.system_to_component_index(i).second;
+      }
+    // H^ab_kl at [(a * dim + b) * n_nodes * n_nodes + k * n_nodes + l], the
+    // scalar mass int phi_k phi_l and load int phi_k
+    std::vector<double> gradient_products(dim * dim * n_nodes * n_nodes);
+    std::vector<double> scalar_mass(n_nodes * n_nodes);
+    std::vector<double> scalar_load(n_nodes);
+    std::vector<Tensor<1, dim>> gradients(n_nodes);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -295,8 +313,9 @@ namespace dyncontact
           const double    lambda     = material.lambda();
           const double    rho        = material.density;
           const auto      body_force = scene.body_force(cell->material_id());
-          fe_values.reinit(cell);
-          mass_values.reinit(cell);
+          const typename Triangulation<dim>::cell_iterator tria_cell(cell);
+          fe_values.reinit(tria_cell);
+          mass_values.reinit(tria_cell);
           // an inverted or twisted cell (which deal.II does not reject on
           // reading) has a non-positive Jacobian somewhere
           for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -307,43 +326,74 @@ namespace dyncontact
                 bad_cell.push_back(cell->material_id() + 1);
               }
 
+          std::fill(gradient_products.begin(), gradient_products.end(), 0.);
+          std::fill(scalar_load.begin(), scalar_load.end(), 0.);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const double JxW = fe_values.JxW(q);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int k = 0; k < n_nodes; ++k)
                 {
-                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
-                  div[i] = fe_values[displacement].divergence(i, q);
+                  gradients[k] = fe_values.shape_grad(k, q);
+                  scalar_load[k] += fe_values.shape_value(k, q) * JxW;
                 }
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    {
-                      const double ee = eps[i] * eps[j];
-                      const double dd = div[i] * div[j];
-                      cell_stiffness(i, j) +=
-                        (2. * mu * ee + lambda * dd) * JxW;
-                      if (material.is_viscous())
-                        cell_viscous(i, j) +=
-                          (2. * material.viscous_shear_modulus * ee +
-                           material.viscous_lambda * dd) *
-                          JxW;
-                    }
-                  cell_load(i) +=
-                    fe_values[displacement].value(i, q) * body_force * JxW;
-                }
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  {
+                    double *H =
+                      &gradient_products[(a * dim + b) * n_nodes * n_nodes];
+                    for (unsigned int k = 0; k < n_nodes; ++k)
+                      {
+                        const double left = gradients[k][a] * JxW;
+                        for (unsigned int l = 0; l < n_nodes; ++l)
+                          H[k * n_nodes + l] += left * gradients[l][b];
+                      }
+                  }
             }
+          const auto H = [&](const unsigned int a,
+                             const unsigned int b,
+                             const unsigned int k,
+                             const unsigned int l) {
+            return gradient_products[(a * dim + b) * n_nodes * n_nodes +
+                                     k * n_nodes + l];
+          };
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const unsigned int c = component[i], k = node[i];
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                {
+                  const unsigned int d = component[j], l = node[j];
+                  double             laplace = 0.;
+                  if (c == d)
+                    for (unsigned int a = 0; a < dim; ++a)
+                      laplace += H(a, a, k, l);
+                  const double shear      = laplace + H(d, c, k, l);
+                  const double divergence = H(c, d, k, l);
+                  cell_stiffness(i, j)    = mu * shear + lambda * divergence;
+                  if (material.is_viscous())
+                    cell_viscous(i, j) =
+                      material.viscous_shear_modulus * shear +
+                      material.viscous_lambda * divergence;
+                }
+              cell_load(i) = scalar_load[k] * body_force[c];
+            }
+
           // (lumped: the element matrix is diagonal, only its diagonal is
           // computed)
+          std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
           for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              for (unsigned int j = (parameters.lumped_mass ? i : 0);
-                   j < (parameters.lumped_mass ? i + 1 : dofs_per_cell);
-                   ++j)
-                cell_mass(i, j) += rho *
-                                   (mass_values[displacement].value(i, q) *
-                                    mass_values[displacement].value(j, q)) *
-                                   mass_values.JxW(q);
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              for (unsigned int l = (parameters.lumped_mass ? k : 0);
+                   l < (parameters.lumped_mass ? k + 1 : n_nodes);
+                   ++l)
+                scalar_mass[k * n_nodes + l] +=
+                  rho * mass_values.shape_value(k, q) *
+                  mass_values.shape_value(l, q) * mass_values.JxW(q);
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int j = (parameters.lumped_mass ? i : 0);
+                 j < (parameters.lumped_mass ? i + 1 : dofs_per_cell);
+                 ++j)
+              if (component[i] == component[j])
+                cell_mass(i, j) = scalar_mass[node[i] * n_nodes + node[j]];
 
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
@@ -352,28 +402,24 @@ namespace dyncontact
                 for (const auto &[traction_id, traction] : tractions)
                   if (traction_id == id)
                     {
-                      face_values.reinit(cell, f);
+                      face_values.reinit(tria_cell, f);
                       for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                         for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                          cell_load(i) +=
-                            face_values[displacement].value(i, q) * traction *
-                            face_values.JxW(q);
+                          cell_load(i) += face_values.shape_value(node[i], q) *
+                                          traction[component[i]] *
+                                          face_values.JxW(q);
                     }
                 if (std::find(contact_ids.begin(), contact_ids.end(), id) !=
                     contact_ids.end())
                   {
                     // w_p = int psi_p ds, by nodal quadrature (positive)
-                    lumped_face_values.reinit(cell, f);
+                    lumped_face_values.reinit(tria_cell, f);
                     for (unsigned int q = 0; q < lumped_face_quadrature.size();
                          ++q)
                       for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                        {
-                          const unsigned int c =
-                            fe.system_to_component_index(i).first;
-                          cell_boundary_weights(i) +=
-                            lumped_face_values.shape_value_component(i, q, c) *
-                            lumped_face_values.JxW(q);
-                        }
+                        cell_boundary_weights(i) +=
+                          lumped_face_values.shape_value(node[i], q) *
+                          lumped_face_values.JxW(q);
                   }
               }
 
