@@ -154,6 +154,20 @@ namespace dyncontact
       "fewer CG iterations in 3D time steps where the stiffness dominates "
       "(tau c/h of 3 and more); no gain in 2D, nor in the static "
       "problems.");
+    prm.declare_entry(
+      "AMG prolongator",
+      "unsmoothed",
+      Patterns::Selection("unsmoothed|smoothed"),
+      "The prolongator of the algebraic multigrid preconditioner (Trilinos "
+      "ML, aggregation): 'unsmoothed' uses the aggregates' near-null-space "
+      "vectors as they are (ML's 'aggregation: damping factor' = 0), "
+      "'smoothed' smooths them with one damped Jacobi step (damping factor "
+      "4/3, ML's default for elliptic problems). Measured on the 3D bar "
+      "(282 123 DoFs): unsmoothed needs the same CG iterations at tau c/h = "
+      "1/2 and 2, and 8% fewer at tau c/h = 8, with a third less set-up time "
+      "and 0.7 kB per DoF less memory (smoothed aggregation's coarse "
+      "matrices are much denser); in the static Hertz problems the two are "
+      "within 8% of each other.");
     prm.leave_subsection();
   }
 
@@ -166,6 +180,7 @@ namespace dyncontact
     max_linear_iterations = prm.get_integer("Maximum linear iterations");
     project_initial_penetration = (prm.get("Initial penetration") == "project");
     amg_rotations = (prm.get("AMG near null space") == "rigid body motions");
+    amg_smoothed_prolongator = (prm.get("AMG prolongator") == "smoothed");
     prm.leave_subsection();
     AssertThrow(linear_tolerance > 0. && linear_tolerance < 1.,
                 ExcMessage("Contact solver/Linear solver tolerance must lie in "
@@ -228,31 +243,34 @@ namespace dyncontact
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     const MatrixType &amg_matrix =
       preconditioner_matrix ? *preconditioner_matrix : matrix;
-    if (near_null_space == nullptr || near_null_space->rotations.empty())
-      amg->initialize(amg_matrix, data);
-    else
+    // deal.II's ML parameters, then what its AdditionalData cannot say
+    Teuchos::ParameterList              list;
+    std::unique_ptr<Epetra_MultiVector> translations;
+    data.set_parameters(list, translations, amg_matrix);
+    if (!parameters.amg_smoothed_prolongator)
+      list.set("aggregation: damping factor", 0.);
+    // the rotations after the translations as deal.II passes them to ML
+    // (ML reads the vectors during initialize())
+    std::unique_ptr<Epetra_MultiVector> modes;
+    if (near_null_space != nullptr && !near_null_space->rotations.empty())
       {
-        // the translations as deal.II passes them to ML, then the rotations
-        // (ML reads the vectors during initialize())
-        Teuchos::ParameterList              list;
-        std::unique_ptr<Epetra_MultiVector> translations;
-        data.set_parameters(list, translations, amg_matrix);
-        const auto        &rotations      = near_null_space->rotations;
-        const int          n_translations = data.constant_modes.size();
-        Epetra_MultiVector modes(
+        const auto &rotations      = near_null_space->rotations;
+        const int   n_translations = data.constant_modes.size();
+        modes                      = std::make_unique<Epetra_MultiVector>(
           amg_matrix.trilinos_matrix().OperatorDomainMap(),
           n_translations + rotations.size());
         for (int m = 0; m < n_translations; ++m)
-          for (int i = 0; i < modes.MyLength(); ++i)
-            modes[m][i] = (*translations)[m][i];
+          for (int i = 0; i < modes->MyLength(); ++i)
+            (*modes)[m][i] = (*translations)[m][i];
         for (unsigned int r = 0; r < rotations.size(); ++r)
-          for (int i = 0; i < modes.MyLength(); ++i)
-            modes[n_translations + r][i] = rotations[r].trilinos_vector()[0][i];
+          for (int i = 0; i < modes->MyLength(); ++i)
+            (*modes)[n_translations + r][i] =
+              rotations[r].trilinos_vector()[0][i];
         list.set("null space: type", "pre-computed");
-        list.set("null space: dimension", modes.NumVectors());
-        list.set("null space: vectors", modes.Values());
-        amg->initialize(amg_matrix, list);
+        list.set("null space: dimension", modes->NumVectors());
+        list.set("null space: vectors", modes->Values());
       }
+    amg->initialize(amg_matrix, list);
   }
 
 

@@ -116,6 +116,10 @@ namespace dyncontact
       /// infinitesimal rotations.
       bool amg_rotations = false;
 
+      /// AMG's prolongator: the tentative (unsmoothed) aggregation, or
+      /// smoothed aggregation (ML's damping factor 4/3).
+      bool amg_smoothed_prolongator = false;
+
       /// Declares subsection "Contact solver".
       static void
       declare_parameters(ParameterHandler &prm);
