@@ -10,8 +10,22 @@
 #include <sstream>
 #include <string>
 
+#ifdef __GLIBC__
+#  include <malloc.h>
+#endif
+
 namespace dyncontact
 {
+  void
+  release_freed_memory()
+  {
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+  }
+
+
+
   double
   available_memory(const MPI_Comm comm)
   {

@@ -105,7 +105,7 @@ namespace dyncontact
   void
   Simulator<dim>::build_mesh()
   {
-    TimerOutput::Scope t(*timer, "setup");
+    TimerOutput::Scope t(*timer, "setup: mesh");
     // refuse a mesh that would not fit into memory before allocating it
     const unsigned int degree = system->get_fe().degree;
     const std::string  remedy = "Mesh/Initial global refinements (now " +
@@ -169,8 +169,10 @@ namespace dyncontact
         "refinement/Minimum level', or use a coarse mesh whose faces are in "
         "standard orientation."));
     {
-      TimerOutput::Scope t(*timer, "setup");
+      TimerOutput::Scope t(*timer, "setup: DoFs and sparsity");
       system->setup(triangulation, *scene);
+      // the dynamic sparsity pattern's rows
+      release_freed_memory();
       pcout << "   cells: " << triangulation.n_global_active_cells()
             << ", DoFs: " << system->get_dof_handler().n_dofs() << std::endl;
     }
@@ -188,7 +190,7 @@ namespace dyncontact
   void
   Simulator<dim>::make_integrator()
   {
-    TimerOutput::Scope t(*timer, "setup");
+    TimerOutput::Scope t(*timer, "setup: step matrix and AMG");
     if (integrator)
       n_step_matrices += integrator->get_operators().n_step_matrices_built;
     ActiveSetSolver::NearNullSpace near_null_space;
@@ -206,6 +208,8 @@ namespace dyncontact
                                        contact->get_rows(),
                                        near_null_space,
                                        comm);
+    // ML's temporaries
+    release_freed_memory();
     // the estimates refer to the old mesh
     step_size_control->reset();
     row_forces.clear();

@@ -161,7 +161,7 @@ namespace dyncontact
     out << std::setprecision(3) << "wall time: " << input.wall_time
         << " s, of which the time loop " << input.loop_wall_time << " s\n";
     for (const auto &[section, wall] : input.section_wall_times)
-      out << "  " << std::left << std::setw(18) << section << std::right
+      out << "  " << std::left << std::setw(27) << section << std::right
           << std::setw(10) << wall << " s " << std::setw(8)
           << input.section_calls.at(section) << " calls  " << std::setw(5)
           << std::fixed << std::setprecision(1)
