@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Scaling of the 3D bar impact with the number of unknowns: a bar of
 length 1 m and height 0.2 m (E = rho = 1, v0 = 1 m/s, N-CS++, lumped mass),
-N cells along it, tau = h/2c, 8 free steps and 8 contact steps (the gap is
-8 tau v0), VTU written at the start and the end. From each run's
+N cells along it (N/2^k coarse cells refined k times, k as large as N
+and N/5 allow: p4est's coarse mesh should have few cells), tau = h/2c,
+8 free steps and 8 contact steps (the gap is 8 tau v0), VTU written at
+the start and the end. From each run's
 summary.txt (timer sections) and statistics.tsv (step wall times, CG
 iterations) and /usr/bin/time (largest resident set size) it prints one
 table: DoFs, set-up (DoFs, constraints, sparsity, contact rows, solver
@@ -31,16 +33,28 @@ if "--tau" in arguments:
     fixed_tau = float(arguments[k + 1])
     del arguments[k:k + 2]
 executable = arguments[0] if arguments else "build/dyncontact"
-sizes = [int(n) for n in arguments[1:]] or [52, 72, 100, 128, 160, 200]
+sizes = [int(n) for n in arguments[1:]] or [60, 80, 100, 120, 160, 200]
 os.makedirs("results-scaling", exist_ok=True)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
            OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def coarse_mesh(cells):
+    """(cells along the coarse bar, global refinements) for N cells along
+    and round(N/5) across."""
+    across = max(1, round(cells * 0.2))
+    k = 0
+    while cells % 2 ** (k + 1) == 0 and across % 2 ** (k + 1) == 0 and \
+            max(1, round(cells // 2 ** (k + 1) * 0.2)) == across // 2 ** (k + 1):
+        k += 1
+    return cells // 2 ** k, k
 
 
 def run(cells, ranks=1):
     name = "bar3d-%d-np%d" % (cells, ranks) + \
         ("-tau%g" % fixed_tau if fixed_tau else "")
     tau = fixed_tau or 0.5 / cells
+    coarse, refinements = coarse_mesh(cells)
     directory = "results-scaling/" + name
     prm = directory + ".prm"
     with open(prm, "w") as f:
@@ -54,6 +68,9 @@ subsection Scene
     set Initial gap = %.17g
   end
 end
+subsection Mesh
+  set Initial global refinements = %d
+end
 subsection Time integration
   set Scheme = N-CS++
   set Time step = %.17g
@@ -62,7 +79,7 @@ end
 subsection Output
   set Output interval = %.17g
 end
-""" % (directory, cells, 8 * tau, tau, 16 * tau, 16 * tau))
+""" % (directory, coarse, 8 * tau, refinements, tau, 16 * tau, 16 * tau))
     command = ["/usr/bin/time", "-v"]
     if ranks > 1:
         command += ["mpirun", "-np", str(ranks)]
@@ -84,7 +101,10 @@ end
                   if float(r["active_nodes"]) > 0]
     dofs = float(rows[-1]["dofs"])
     section = lambda s: sections.get(s, (0.0, 0))[0]
-    return dict(dofs=dofs, setup=section("setup") + section("contact rows"),
+    setup_parts = {s: t for s, (t, calls) in sections.items()
+                   if s.startswith("setup")}
+    return dict(dofs=dofs, setup=sum(setup_parts.values()) + section("contact rows"),
+                setup_parts=setup_parts,
                 assembly=section("assembly"),
                 free=sum(free) / max(len(free), 1),
                 contact=sum(contact) / max(len(contact), 1), cg=cg,
@@ -119,6 +139,9 @@ for n in sizes:
            r["cg_contact"], 100 * r["diagnostics_per_step"] / step,
            100 * r["diagnostics"], 100 * r["norms"], 100 * r["output"],
            r["write"] / step, r["rss"] / r["dofs"] / 1e3), flush=True)
+    print("          set-up: " + ", ".join(
+        "%s %.2f s" % (name[len("setup: "):] if name != "setup" else name, t)
+        for name, t in sorted(r["setup_parts"].items())), flush=True)
 if len(results) < 2:
     sys.exit(0)
 dofs = [r["dofs"] for r in results]
@@ -130,9 +153,10 @@ print("exponents against DoFs: set-up %.2f, assembly %.2f, free step %.2f, "
        fit(dofs, [r["contact"] for r in results]),
        fit(dofs, [r["cg_contact"] for r in results])))
 last = results[-1]
-print("at %d DoFs: set-up + assembly = %.1f steps" %
+print("at %d DoFs: set-up + assembly = %.1f mean steps (%.1f contact steps)" %
       (last["dofs"], (last["setup"] + last["assembly"]) /
-       (0.5 * (last["free"] + last["contact"]))))
+       (0.5 * (last["free"] + last["contact"])),
+       (last["setup"] + last["assembly"]) / last["contact"]))
 if fixed_tau:
     sys.exit(0)
 nearest = min(sizes, key=lambda n: abs(results[sizes.index(n)]["dofs"] - 2.6e5))
