@@ -296,6 +296,7 @@ namespace dyncontact
     // H^ab_kl at [(a * dim + b) * n_nodes * n_nodes + k * n_nodes + l], the
     // scalar mass int phi_k phi_l and load int phi_k
     std::vector<double> gradient_products(dim * dim * n_nodes * n_nodes);
+    std::vector<double> laplace(n_nodes * n_nodes);
     std::vector<double> scalar_mass(n_nodes * n_nodes);
     std::vector<double> scalar_load(n_nodes);
     std::vector<Tensor<1, dim>> gradients(n_nodes);
@@ -356,17 +357,20 @@ namespace dyncontact
             return gradient_products[(a * dim + b) * n_nodes * n_nodes +
                                      k * n_nodes + l];
           };
+          // the scalar Laplacian sum_a H^aa_kl
+          std::fill(laplace.begin(), laplace.end(), 0.);
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int kl = 0; kl < n_nodes * n_nodes; ++kl)
+              laplace[kl] +=
+                gradient_products[(a * dim + a) * n_nodes * n_nodes + kl];
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             {
               const unsigned int c = component[i], k = node[i];
               for (unsigned int j = 0; j < dofs_per_cell; ++j)
                 {
                   const unsigned int d = component[j], l = node[j];
-                  double             laplace = 0.;
-                  if (c == d)
-                    for (unsigned int a = 0; a < dim; ++a)
-                      laplace += H(a, a, k, l);
-                  const double shear      = laplace + H(d, c, k, l);
+                  const double       shear =
+                    (c == d ? laplace[k * n_nodes + l] : 0.) + H(d, c, k, l);
                   const double divergence = H(c, d, k, l);
                   cell_stiffness(i, j)    = mu * shear + lambda * divergence;
                   if (material.is_viscous())
