@@ -62,13 +62,18 @@ one_step(const std::string                      &scheme,
     M_diagonal.push_back(M_entries[i][i]);
   const VectorType M_lumped = make_vector(M_diagonal);
   CachedProduct    A_product;
-  A_product.reinit(&A);
+  A_product.reinit([&A](VectorType &y, const VectorType &x) { A.vmult(y, x); });
   SystemMatrices system;
   system.M_lumped  = &M_lumped;
-  system.A         = &A;
   system.A_product = &A_product;
-  system.B         = &B;
-  system.f         = &f;
+  system.B_vmult = [&B](VectorType &y, const VectorType &x) { B.vmult(y, x); };
+  system.assemble_stiffness =
+    [&A, &B](MatrixType &matrix, const double a, const double b) {
+      matrix.copy_from(A);
+      matrix *= a;
+      matrix.add(b, B);
+    };
+  system.f = &f;
   ContactRows rows;
   rows.rows                  = {row};
   const auto     constraints = no_constraints(n);

@@ -69,7 +69,7 @@ main(int argc, char **argv)
         << check(run.text.find("body 1: 410 DoFs") != std::string::npos &&
                  run.text.find("rigid obstacle (no contact search), 5 rows") !=
                    std::string::npos &&
-                 run.text.find("elastic (no viscous matrix)") !=
+                 run.text.find("elastic (no viscous form)") !=
                    std::string::npos &&
                  run.text.find("tau = 0.0125 s, 200 steps") !=
                    std::string::npos)

@@ -46,9 +46,9 @@ namespace dyncontact
       text << "two bodies through phi_h, " << contact->n_global_rows()
            << " rows on the slave side";
     text << "\n   material: "
-         << (system->has_viscous_matrix() ?
-               "viscoelastic (Kelvin-Voigt, viscous matrix B)" :
-               "elastic (no viscous matrix)")
+         << (system->is_viscous() ?
+               "viscoelastic (Kelvin-Voigt, viscous form B)" :
+               "elastic (no viscous form)")
          << ", " << (system->matrices().lumped_mass() ? "lumped" : "consistent")
          << " mass\n   time: ";
     if (scheme.is_static)

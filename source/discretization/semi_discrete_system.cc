@@ -116,6 +116,9 @@ namespace dyncontact
                                                locally_owned,
                                                comm,
                                                locally_relevant);
+    // one graph, which every matrix built on it shares (Epetra counts its
+    // references)
+    sparsity.reinit(locally_owned, locally_owned, dsp, comm);
     // a lumped mass is kept as its diagonal only
     if (parameters.lumped_mass)
       {
@@ -124,16 +127,11 @@ namespace dyncontact
       }
     else
       {
-        mass_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+        mass_matrix.reinit(sparsity);
         lumped_mass_diagonal.clear();
       }
-    stiffness_matrix.reinit(locally_owned, locally_owned, dsp, comm);
     stiffness_product.reinit(nullptr);
     viscous = scene.is_viscous();
-    if (viscous)
-      viscous_matrix.reinit(locally_owned, locally_owned, dsp, comm);
-    else
-      viscous_matrix.clear();
 
     load.reinit(locally_owned, comm);
     boundary_weights.reinit(locally_owned, comm);
@@ -250,18 +248,10 @@ namespace dyncontact
           }
       }
 
-    // Every shape function of FE_Q<dim>^dim is a scalar shape function
-    // phi_k of FE_Q times a unit vector e_c, so the element matrices follow
-    // from the scalar values and gradients (a third of the work of the
-    // vector element's FEValues): with H^ab_kl = int d_a phi_k d_b phi_l,
-    //   2 mu eps(phi_k e_c) : eps(phi_l e_d) = mu (delta_cd sum_a H^aa_kl
-    //                                              + H^dc_kl),
-    //   div(phi_k e_c) div(phi_l e_d)        = H^cd_kl.
     FEValues<dim>     fe_values(mapping,
                             scalar_fe,
                             quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
+                            update_values | update_JxW_values);
     FEValues<dim>     mass_values(mapping,
                               scalar_fe,
                               mass_quadrature,
@@ -279,8 +269,6 @@ namespace dyncontact
     const unsigned int  n_nodes       = scalar_fe.n_dofs_per_cell();
     std::vector<double> bad_cell; // centre and body of an inverted cell
     FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double>  cell_stiffness(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double>  cell_viscous(dofs_per_cell, dofs_per_cell);
     Vector<double>      cell_lumped_mass(dofs_per_cell);
     Vector<double>      cell_load(dofs_per_cell);
     Vector<double>      cell_boundary_weights(dofs_per_cell);
@@ -293,27 +281,23 @@ namespace dyncontact
         component[i] = fe.system_to_component_index(i).first;
         node[i]      = fe.system_to_component_index(i).second;
       }
-    // H^ab_kl at [(a * dim + b) * n_nodes * n_nodes + k * n_nodes + l], the
-    // scalar mass int phi_k phi_l and load int phi_k
-    std::vector<double> gradient_products(dim * dim * n_nodes * n_nodes);
-    std::vector<double> laplace(n_nodes * n_nodes);
+    // the scalar mass int phi_k phi_l and load int phi_k
     std::vector<double> scalar_mass(n_nodes * n_nodes);
     std::vector<double> scalar_load(n_nodes);
-    std::vector<Tensor<1, dim>> gradients(n_nodes);
 
+    materials.clear();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_mass                  = 0.;
-          cell_stiffness             = 0.;
-          cell_viscous               = 0.;
-          cell_load                  = 0.;
-          cell_boundary_weights      = 0.;
-          const Material &material   = scene.material(cell->material_id());
-          const double    mu         = material.mu();
-          const double    lambda     = material.lambda();
-          const double    rho        = material.density;
-          const auto      body_force = scene.body_force(cell->material_id());
+          cell_mass             = 0.;
+          cell_load             = 0.;
+          cell_boundary_weights = 0.;
+          const Material &material =
+            materials
+              .emplace(cell->material_id(), scene.material(cell->material_id()))
+              .first->second;
+          const double rho        = material.density;
+          const auto   body_force = scene.body_force(cell->material_id());
           const typename Triangulation<dim>::cell_iterator tria_cell(cell);
           fe_values.reinit(tria_cell);
           mass_values.reinit(tria_cell);
@@ -327,59 +311,12 @@ namespace dyncontact
                 bad_cell.push_back(cell->material_id() + 1);
               }
 
-          std::fill(gradient_products.begin(), gradient_products.end(), 0.);
           std::fill(scalar_load.begin(), scalar_load.end(), 0.);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const double JxW = fe_values.JxW(q);
-              for (unsigned int k = 0; k < n_nodes; ++k)
-                {
-                  gradients[k] = fe_values.shape_grad(k, q);
-                  scalar_load[k] += fe_values.shape_value(k, q) * JxW;
-                }
-              for (unsigned int a = 0; a < dim; ++a)
-                for (unsigned int b = 0; b < dim; ++b)
-                  {
-                    double *H =
-                      &gradient_products[(a * dim + b) * n_nodes * n_nodes];
-                    for (unsigned int k = 0; k < n_nodes; ++k)
-                      {
-                        const double left = gradients[k][a] * JxW;
-                        for (unsigned int l = 0; l < n_nodes; ++l)
-                          H[k * n_nodes + l] += left * gradients[l][b];
-                      }
-                  }
-            }
-          const auto H = [&](const unsigned int a,
-                             const unsigned int b,
-                             const unsigned int k,
-                             const unsigned int l) {
-            return gradient_products[(a * dim + b) * n_nodes * n_nodes +
-                                     k * n_nodes + l];
-          };
-          // the scalar Laplacian sum_a H^aa_kl
-          std::fill(laplace.begin(), laplace.end(), 0.);
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int kl = 0; kl < n_nodes * n_nodes; ++kl)
-              laplace[kl] +=
-                gradient_products[(a * dim + a) * n_nodes * n_nodes + kl];
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              scalar_load[k] += fe_values.shape_value(k, q) * fe_values.JxW(q);
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            {
-              const unsigned int c = component[i], k = node[i];
-              for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                {
-                  const unsigned int d = component[j], l = node[j];
-                  const double       shear =
-                    (c == d ? laplace[k * n_nodes + l] : 0.) + H(d, c, k, l);
-                  const double divergence = H(c, d, k, l);
-                  cell_stiffness(i, j)    = mu * shear + lambda * divergence;
-                  if (material.is_viscous())
-                    cell_viscous(i, j) =
-                      material.viscous_shear_modulus * shear +
-                      material.viscous_lambda * divergence;
-                }
-              cell_load(i) = scalar_load[k] * body_force[c];
-            }
+            cell_load(i) = scalar_load[node[i]] * body_force[component[i]];
 
           // (lumped: the element matrix is diagonal, only its diagonal is
           // computed)
@@ -436,9 +373,6 @@ namespace dyncontact
             }
           else
             mass_matrix.add(dof_indices, cell_mass);
-          stiffness_matrix.add(dof_indices, cell_stiffness);
-          if (viscous)
-            viscous_matrix.add(dof_indices, cell_viscous);
           load.add(dof_indices, cell_load);
           boundary_weights.add(dof_indices, cell_boundary_weights);
         }
@@ -447,8 +381,6 @@ namespace dyncontact
       lumped_mass_diagonal.compress(VectorOperation::add);
     else
       mass_matrix.compress(VectorOperation::add);
-    stiffness_matrix.compress(VectorOperation::add);
-    stiffness_product.reinit(&stiffness_matrix);
     for (const auto &rank_bad : Utilities::MPI::all_gather(comm, bad_cell))
       if (!rank_bad.empty())
         {
@@ -465,10 +397,108 @@ namespace dyncontact
                                  "; check the mesh (file) and the order of "
                                  "the cell's vertices."));
         }
-    if (viscous)
-      viscous_matrix.compress(VectorOperation::add);
     load.compress(VectorOperation::add);
     boundary_weights.compress(VectorOperation::add);
+
+    elastic_operator.reinit(mapping, dof_handler, materials);
+    stiffness_product.reinit(
+      [this](VectorType &y, const VectorType &x) { stiffness_vmult(y, x); });
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::assemble_stiffness_matrix(MatrixType  &matrix,
+                                                     const double a,
+                                                     const double b) const
+  {
+    matrix.reinit(sparsity);
+    // Every shape function of FE_Q<dim>^dim is a scalar shape function
+    // phi_k of FE_Q times a unit vector e_c, so the element matrices follow
+    // from the scalar gradients (a third of the work of the vector
+    // element's FEValues): with H^ab_kl = int d_a phi_k d_b phi_l,
+    //   2 mu eps(phi_k e_c) : eps(phi_l e_d) = mu (delta_cd sum_a H^aa_kl
+    //                                              + H^dc_kl),
+    //   div(phi_k e_c) div(phi_l e_d)        = H^cd_kl.
+    const QGauss<dim>  quadrature(fe.degree + 1);
+    FEValues<dim>      fe_values(mapping,
+                            scalar_fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int n_nodes       = scalar_fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<unsigned int> component(dofs_per_cell), node(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      {
+        component[i] = fe.system_to_component_index(i).first;
+        node[i]      = fe.system_to_component_index(i).second;
+      }
+    // H^ab_kl at [(a * dim + b) * n_nodes * n_nodes + k * n_nodes + l]
+    std::vector<double> gradient_products(dim * dim * n_nodes * n_nodes);
+    std::vector<double> laplace(n_nodes * n_nodes);
+    std::vector<Tensor<1, dim>> gradients(n_nodes);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Material &material = materials.at(cell->material_id());
+          // the moduli of a A + b B
+          const double mu = a * material.mu() +
+                            (b != 0. ? b * material.viscous_shear_modulus : 0.);
+          const double lambda = a * material.lambda() +
+                                (b != 0. ? b * material.viscous_lambda : 0.);
+          fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+
+          std::fill(gradient_products.begin(), gradient_products.end(), 0.);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int k = 0; k < n_nodes; ++k)
+                gradients[k] = fe_values.shape_grad(k, q);
+              for (unsigned int c = 0; c < dim; ++c)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    double *H =
+                      &gradient_products[(c * dim + d) * n_nodes * n_nodes];
+                    for (unsigned int k = 0; k < n_nodes; ++k)
+                      {
+                        const double left = gradients[k][c] * JxW;
+                        for (unsigned int l = 0; l < n_nodes; ++l)
+                          H[k * n_nodes + l] += left * gradients[l][d];
+                      }
+                  }
+            }
+          const auto H = [&](const unsigned int c,
+                             const unsigned int d,
+                             const unsigned int k,
+                             const unsigned int l) {
+            return gradient_products[(c * dim + d) * n_nodes * n_nodes +
+                                     k * n_nodes + l];
+          };
+          // the scalar Laplacian sum_c H^cc_kl
+          std::fill(laplace.begin(), laplace.end(), 0.);
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int kl = 0; kl < n_nodes * n_nodes; ++kl)
+              laplace[kl] +=
+                gradient_products[(c * dim + c) * n_nodes * n_nodes + kl];
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const unsigned int c = component[i], k = node[i];
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                {
+                  const unsigned int d = component[j], l = node[j];
+                  const double       shear =
+                    (c == d ? laplace[k * n_nodes + l] : 0.) + H(d, c, k, l);
+                  cell_matrix(i, j) = mu * shear + lambda * H(c, d, k, l);
+                }
+            }
+          cell->get_dof_indices(dof_indices);
+          matrix.add(dof_indices, cell_matrix);
+        }
+    matrix.compress(VectorOperation::add);
   }
 
 
@@ -632,20 +662,26 @@ namespace dyncontact
     SystemMatrices system;
     system.M         = parameters.lumped_mass ? nullptr : &mass_matrix;
     system.M_lumped  = parameters.lumped_mass ? &lumped_mass_diagonal : nullptr;
-    system.A         = &stiffness_matrix;
     system.A_product = &stiffness_product;
-    system.B         = viscous ? &viscous_matrix : nullptr;
-    system.f         = &load;
+    if (viscous)
+      system.B_vmult = [this](VectorType &y, const VectorType &x) {
+        viscous_vmult(y, x);
+      };
+    system.assemble_stiffness =
+      [this](MatrixType &matrix, const double a, const double b) {
+        assemble_stiffness_matrix(matrix, a, b);
+      };
+    system.f = &load;
     return system;
   }
 
 
 
   void
-  CachedProduct::reinit(const MatrixType *matrix)
+  CachedProduct::reinit(const Product &product)
   {
-    this->matrix = matrix;
-    valid        = false;
+    this->product = product;
+    valid         = false;
   }
 
 
@@ -653,7 +689,7 @@ namespace dyncontact
   const VectorType &
   CachedProduct::vmult(const VectorType &x) const
   {
-    Assert(matrix != nullptr, ExcInternalError());
+    Assert(product, ExcInternalError());
     bool hit = valid &&
                x_last.locally_owned_elements() == x.locally_owned_elements() &&
                std::memcmp(x_last.begin(),
@@ -664,7 +700,7 @@ namespace dyncontact
       {
         x_last = x;
         y_last.reinit(x, true);
-        matrix->vmult(y_last, x);
+        product(y_last, x);
         valid = true;
       }
     return y_last;

@@ -167,7 +167,7 @@ namespace dyncontact
     VectorType tmp(e);
     system.matrices().mass_vmult(tmp, edot);
     double error2 = 0.5 * (tmp * edot);
-    system.get_stiffness_matrix().vmult(tmp, e);
+    system.stiffness_vmult(tmp, e);
     error2 += 0.5 * (tmp * e);
     return std::sqrt(std::max(error2, 0.));
   }

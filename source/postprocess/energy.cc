@@ -56,11 +56,11 @@ namespace dyncontact
         VectorType                     M_udot(u);
         const auto [kinetic, elastic] =
           system.energies(u, this->get_velocity(), M_udot);
-        if (this->get_control().get_step() > 0 && system.has_viscous_matrix())
+        if (this->get_control().get_step() > 0 && system.is_viscous())
           {
             VectorType du(u), B_du(u);
             du -= this->get_old_solution();
-            system.get_viscous_matrix().vmult(B_du, du);
+            system.viscous_vmult(B_du, du);
             dissipation += (B_du * du) / this->get_integrator().time_step();
           }
         const double       total = kinetic + elastic + dissipation;

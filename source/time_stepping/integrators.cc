@@ -42,9 +42,9 @@ namespace dyncontact
         // condensed operator does not have. 3D ball on block, static, 18e3
         // and 96e3 DoFs: 2366 and 3304 CG iterations at eps = 1e-6, 1020
         // and 1390 at 1e-2, 2010 at 1e-1 (96e3).
-        preconditioner_matrix.copy_from(*system.A);
+        system.assemble_stiffness(preconditioner_matrix, 1., 0.);
         system.add_mass(preconditioner_matrix,
-                        1e-2 * system.A->linfty_norm() /
+                        1e-2 * preconditioner_matrix.linfty_norm() /
                           system.mass_linfty_norm());
         // start with every row active: the bodies are held by the contact
         displacement_active.assign(rows.size(), 1);
@@ -75,18 +75,17 @@ namespace dyncontact
     solver.set_near_null_space(near_null_space);
     if (is_static)
       {
-        S.copy_from(*system.A);
+        system.assemble_stiffness(S, 1., 0.);
         solver.set_matrix(S, &preconditioner_matrix);
       }
     else
       {
-        // S = M + tau^2/4 A + tau/2 B, formed from the assembled matrices
-        // (as tau^2/4 A + M: the same sums, also for a lumped M)
-        S.copy_from(*system.A);
-        S *= tau * tau / 4.;
+        // S = M + tau^2/4 A + tau/2 B: tau^2/4 A + tau/2 B assembled cell by
+        // cell, then the mass added
+        system.assemble_stiffness(S,
+                                  tau * tau / 4.,
+                                  system.viscous() ? tau / 2. : 0.);
         system.add_mass(S, 1.);
-        if (system.B != nullptr)
-          S.add(tau / 2., *system.B);
         solver.set_matrix(S);
         // how far the stiffness and viscosity outweigh the mass in S
         double ratio = 1.;
@@ -145,10 +144,10 @@ namespace dyncontact
     const double tau = current->tau;
     system.mass_vmult(r, w);
     r.add(-tau * tau / 4., system.stiffness_vmult(u));
-    if (system.B != nullptr)
+    if (system.viscous())
       {
         VectorType tmp(u);
-        system.B->vmult(tmp, u);
+        system.B_vmult(tmp, u);
         r.add(tau / 2., tmp);
       }
     r.add(tau * tau / 2., *system.f);

@@ -10,10 +10,13 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dyncontact/discretization/elastic_operator.h>
 #include <dyncontact/scenes/interface.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <utility>
@@ -29,45 +32,60 @@ namespace dyncontact
   using VectorType = TrilinosWrappers::MPI::Vector;
   using MatrixType = TrilinosWrappers::SparseMatrix;
 
+  /// y = L x for a linear operator L.
+  using Product = std::function<void(VectorType &y, const VectorType &x)>;
+
   /**
-   * y = A x for a sparse matrix A, remembered for the last x: the elastic
+   * y = A x for an operator A, remembered for the last x: the elastic
    * energy after a step and the right-hand side of the next step need the
    * same product. A hit is decided on the bits of x on every rank at once
    * (one scalar reduction), so that the ranks take part in the same
-   * matrix-vector products.
+   * operator applications.
    */
   class CachedProduct
   {
   public:
-    /// Forgets the last product; @p matrix from now on.
+    /// Forgets the last product; @p product from now on.
     void
-    reinit(const MatrixType *matrix);
+    reinit(const Product &product);
 
     /// A x (the reference stays valid until the next call or reinit()).
     const VectorType &
     vmult(const VectorType &x) const;
 
   private:
-    const MatrixType  *matrix = nullptr;
-    mutable bool       valid  = false;
+    Product            product;
+    mutable bool       valid = false;
     mutable VectorType x_last;
     mutable VectorType y_last;
   };
 
   /**
-   * The matrices and the load of the semi-discrete problem that a time
+   * The operators and the load of the semi-discrete problem that a time
    * integrator needs. The mass is either a consistent matrix M or, lumped,
-   * its diagonal M_lumped (no sparse matrix is kept for it). B is nullptr
-   * for an elastic body.
+   * its diagonal M_lumped (no sparse matrix is kept for it). The elastic
+   * and viscous stiffness A and B are applied without a matrix
+   * (ElasticOperator); a matrix a A + b B, such as the time step's, is
+   * assembled on demand. B_vmult is empty for an elastic body.
    */
   struct SystemMatrices
   {
     const MatrixType    *M         = nullptr;
     const VectorType    *M_lumped  = nullptr;
-    const MatrixType    *A         = nullptr;
     const CachedProduct *A_product = nullptr;
-    const MatrixType    *B         = nullptr;
-    const VectorType    *f         = nullptr;
+    Product              B_vmult;
+    /// matrix = a A + b B, on the sparsity pattern of M (which the matrix
+    /// is given).
+    std::function<void(MatrixType &matrix, double a, double b)>
+                      assemble_stiffness;
+    const VectorType *f = nullptr;
+
+    /// Whether there is a viscous form B.
+    bool
+    viscous() const
+    {
+      return static_cast<bool>(B_vmult);
+    }
 
     /// Whether the mass is lumped (given by M_lumped, M is nullptr).
     bool
@@ -132,8 +150,8 @@ namespace dyncontact
     setup(const parallel::distributed::Triangulation<dim> &triangulation,
           const Scene<dim>                                &scene);
 
-    /// M (the diagonal only if lumped), A, B, f and the boundary weights w;
-    /// checks that no cell is inverted.
+    /// M (the diagonal only if lumped), the matrix-free A and B, f and the
+    /// boundary weights w; checks that no cell is inverted.
     void
     assemble(const Scene<dim> &scene);
 
@@ -226,21 +244,30 @@ namespace dyncontact
     {
       return constraints;
     }
-    const MatrixType &
-    get_stiffness_matrix() const
-    {
-      return stiffness_matrix;
-    }
+    /// Whether the scene has a viscous body (a viscous form B).
     bool
-    has_viscous_matrix() const
+    is_viscous() const
     {
       return viscous;
     }
-    const MatrixType &
-    get_viscous_matrix() const
+    /// y = A x (elastic form, without a matrix).
+    void
+    stiffness_vmult(VectorType &y, const VectorType &x) const
     {
-      return viscous_matrix;
+      elastic_operator.vmult(y, x, ElasticOperator<dim>::Form::elastic);
     }
+    /// y = B x (viscous form, without a matrix).
+    void
+    viscous_vmult(VectorType &y, const VectorType &x) const
+    {
+      elastic_operator.vmult(y, x, ElasticOperator<dim>::Form::viscous);
+    }
+    /// @p matrix = a A + b B, assembled cell by cell on the sparsity pattern
+    /// of the unconstrained operator.
+    void
+    assemble_stiffness_matrix(MatrixType  &matrix,
+                              const double a,
+                              const double b) const;
     const VectorType &
     get_load() const
     {
@@ -306,14 +333,17 @@ namespace dyncontact
     std::map<types::global_dof_index, types::global_dof_index>
       owned_system0_to_scalar;
 
+    /// of the unconstrained operator, shared by the matrices built on it
+    TrilinosWrappers::SparsityPattern sparsity;
+    /// the moduli of each material id of the mesh
+    std::map<types::material_id, Material> materials;
     /// the consistent mass matrix, or (lumped) its diagonal
-    MatrixType    mass_matrix;
-    VectorType    lumped_mass_diagonal;
-    MatrixType    stiffness_matrix;
-    CachedProduct stiffness_product;
-    MatrixType    viscous_matrix;
-    VectorType    load;
-    VectorType    boundary_weights;
+    MatrixType           mass_matrix;
+    VectorType           lumped_mass_diagonal;
+    ElasticOperator<dim> elastic_operator;
+    CachedProduct        stiffness_product;
+    VectorType           load;
+    VectorType           boundary_weights;
 
     /// A state in transfer (refinement or checkpoint) and its ghosted copy.
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>

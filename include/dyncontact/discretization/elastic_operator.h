@@ -1,0 +1,70 @@
+#ifndef dyncontact_discretization_elastic_operator_h
+#define dyncontact_discretization_elastic_operator_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dyncontact/discretization/material.h>
+
+#include <map>
+#include <memory>
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class DoFHandler;
+  template <int dim, int spacedim>
+  class Mapping;
+} // namespace dealii
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  /**
+   * The elastic form a(u, v) = int 2 mu eps(u) : eps(v) + lambda div u div v
+   * and the viscous form b(u, v) (the same with mu_v, lambda_v) applied
+   * without a matrix (deal.II's MatrixFree, sum factorisation, Gauss
+   * quadrature of p + 1 points per direction as in the assembly): A x and
+   * B x for the right-hand side and the energy of every step, on the
+   * unconstrained space (as the assembled matrices, constraints are the
+   * active-set solver's). The time step's matrix S is assembled; A and B
+   * are never stored, which saves one value per matrix entry.
+   */
+  template <int dim>
+  class ElasticOperator
+  {
+  public:
+    enum class Form
+    {
+      elastic,
+      viscous
+    };
+
+    ElasticOperator();
+    ~ElasticOperator();
+
+    /// On the current mesh: the moduli of each cell from @p materials by
+    /// its material id.
+    void
+    reinit(const Mapping<dim, dim>                      &mapping,
+           const DoFHandler<dim, dim>                   &dof_handler,
+           const std::map<types::material_id, Material> &materials);
+
+    /// dst = A src or B src (owned vectors of the DoF handler's layout).
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src,
+          const Form                           form) const;
+
+    /// Memory of the matrix-free data, in bytes.
+    std::size_t
+    memory_consumption() const;
+
+  private:
+    struct Data;
+    std::unique_ptr<Data> data;
+  };
+} // namespace dyncontact
+
+#endif

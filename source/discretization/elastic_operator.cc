@@ -1,0 +1,159 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <deal.II/matrix_free/matrix_free.h>
+
+#include <dyncontact/discretization/elastic_operator.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace dyncontact
+{
+  template <int dim>
+  struct ElasticOperator<dim>::Data
+  {
+    using Number     = double;
+    using Vectorized = VectorizedArray<Number>;
+    using LAVector   = LinearAlgebra::distributed::Vector<Number>;
+
+    MatrixFree<dim, Number> matrix_free;
+    /// (mu, lambda) of each cell batch, elastic and viscous
+    std::vector<std::array<Vectorized, 2>> elastic_moduli;
+    std::vector<std::array<Vectorized, 2>> viscous_moduli;
+    mutable LAVector                       src;
+    mutable LAVector                       dst;
+
+    void
+    apply(const MatrixFree<dim, Number>                &matrix_free,
+          LAVector                                     &dst,
+          const LAVector                               &src,
+          const std::pair<unsigned int, unsigned int>  &cells,
+          const std::vector<std::array<Vectorized, 2>> &moduli) const
+    {
+      // runtime degree: deal.II dispatches to its precompiled kernels
+      FEEvaluation<dim, -1, 0, dim, Number> phi(matrix_free);
+      for (unsigned int cell = cells.first; cell < cells.second; ++cell)
+        {
+          phi.reinit(cell);
+          phi.gather_evaluate(src, EvaluationFlags::gradients);
+          const Vectorized two_mu = 2. * moduli[cell][0];
+          const Vectorized lambda = moduli[cell][1];
+          for (const unsigned int q : phi.quadrature_point_indices())
+            {
+              SymmetricTensor<2, dim, Vectorized> stress =
+                phi.get_symmetric_gradient(q);
+              const Vectorized divergence = lambda * trace(stress);
+              stress *= two_mu;
+              for (unsigned int d = 0; d < dim; ++d)
+                stress[d][d] += divergence;
+              phi.submit_symmetric_gradient(stress, q);
+            }
+          phi.integrate_scatter(EvaluationFlags::gradients, dst);
+        }
+    }
+  };
+
+
+
+  template <int dim>
+  ElasticOperator<dim>::ElasticOperator()
+    : data(std::make_unique<Data>())
+  {}
+
+
+
+  template <int dim>
+  ElasticOperator<dim>::~ElasticOperator() = default;
+
+
+
+  template <int dim>
+  void
+  ElasticOperator<dim>::reinit(
+    const Mapping<dim, dim>                      &mapping,
+    const DoFHandler<dim, dim>                   &dof_handler,
+    const std::map<types::material_id, Material> &materials)
+  {
+    typename MatrixFree<dim, double>::AdditionalData additional_data;
+    additional_data.tasks_parallel_scheme =
+      MatrixFree<dim, double>::AdditionalData::none;
+    additional_data.mapping_update_flags = update_gradients | update_JxW_values;
+    // the unconstrained operator, like the assembled matrices
+    AffineConstraints<double> no_constraints;
+    no_constraints.close();
+    data->matrix_free.reinit(mapping,
+                             dof_handler,
+                             no_constraints,
+                             QGauss<1>(dof_handler.get_fe().degree + 1),
+                             additional_data);
+    data->matrix_free.initialize_dof_vector(data->src);
+    data->matrix_free.initialize_dof_vector(data->dst);
+
+    const unsigned int n_batches = data->matrix_free.n_cell_batches();
+    data->elastic_moduli.assign(n_batches, {});
+    data->viscous_moduli.assign(n_batches, {});
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      for (unsigned int lane = 0;
+           lane < data->matrix_free.n_active_entries_per_cell_batch(batch);
+           ++lane)
+        {
+          const auto cell = data->matrix_free.get_cell_iterator(batch, lane);
+          const Material &material = materials.at(cell->material_id());
+          data->elastic_moduli[batch][0][lane] = material.mu();
+          data->elastic_moduli[batch][1][lane] = material.lambda();
+          data->viscous_moduli[batch][0][lane] = material.viscous_shear_modulus;
+          data->viscous_moduli[batch][1][lane] = material.viscous_lambda;
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticOperator<dim>::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                              const TrilinosWrappers::MPI::Vector &src,
+                              const Form                           form) const
+  {
+    // the owned entries of both vector types are the owned DoFs in
+    // increasing order
+    AssertDimension(src.locally_owned_size(), data->src.locally_owned_size());
+    AssertDimension(dst.locally_owned_size(), data->dst.locally_owned_size());
+    std::copy(src.begin(), src.end(), data->src.begin());
+    const auto &moduli =
+      (form == Form::elastic) ? data->elastic_moduli : data->viscous_moduli;
+    data->matrix_free
+      .template cell_loop<typename Data::LAVector, typename Data::LAVector>(
+        [&](const MatrixFree<dim, double>               &matrix_free,
+            typename Data::LAVector                     &out,
+            const typename Data::LAVector               &in,
+            const std::pair<unsigned int, unsigned int> &cells) {
+          data->apply(matrix_free, out, in, cells, moduli);
+        },
+        data->dst,
+        data->src,
+        true);
+    std::copy(data->dst.begin(), data->dst.end(), dst.begin());
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  ElasticOperator<dim>::memory_consumption() const
+  {
+    return data->matrix_free.memory_consumption() +
+           data->src.memory_consumption() + data->dst.memory_consumption() +
+           2 * data->elastic_moduli.size() *
+             sizeof(std::array<VectorizedArray<double>, 2>);
+  }
+
+
+
+  template class ElasticOperator<2>;
+  template class ElasticOperator<3>;
+} // namespace dyncontact
