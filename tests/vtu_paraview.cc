@@ -1,5 +1,6 @@
 // The VTU/PVTU/PVD output opens in ParaView: a bar impact written by the
-// dyncontact executable on one and on two MPI ranks is loaded with pvpython
+// dyncontact executable on one and on two MPI ranks, and on two ranks in
+// several pieces per rank ('Cells per piece'), is loaded with pvpython
 // (tests/check_vtu.py), which checks that all fields are there and that the
 // mesh warped by the displacement puts the bar's end where the exact
 // solution puts it (free flight, in contact at the wall, after release).
@@ -9,29 +10,52 @@
 #include "tests.h"
 
 
+/// The number of pieces a .pvtu record lists.
+unsigned int
+count_pieces(const std::string &pvtu)
+{
+  std::ifstream in(pvtu);
+  std::string   line;
+  unsigned int  n = 0;
+  while (std::getline(in, line))
+    n += (line.find("<Piece Source=") != std::string::npos);
+  return n;
+}
+
+
+
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace testing;
 
-  for (const unsigned int n_ranks : {1u, 2u})
+  // (ranks, cells per VTU piece): one piece per rank, then 3 pieces of at
+  // most 30 of the 80 cells on each of 2 ranks
+  for (const auto &[n_ranks, cells_per_piece] :
+       std::vector<std::pair<unsigned int, unsigned int>>{{1, 65536},
+                                                          {2, 65536},
+                                                          {2, 30}})
     {
-      const std::string directory = "results-" + std::to_string(n_ranks);
+      const std::string directory = "results-" + std::to_string(n_ranks) + "-" +
+                                    std::to_string(cells_per_piece);
       std::ofstream(directory + ".prm")
         << bar_prm(2, "N-CS++", 40, 0.0125, 2.5)
         << "set Output directory = " << directory << "\n"
         << "subsection Output\n  set Write vtu = true\n"
-        << "  set Output interval = 0.05\nend\n";
+        << "  set Output interval = 0.05\n"
+        << "  set Cells per piece = " << cells_per_piece << "\nend\n";
       const std::string program =
         n_ranks == 1 ?
           std::string(DYNCONTACT_EXECUTABLE) :
           std::string(DYNCONTACT_MPIEXEC) + " -np 2 " + DYNCONTACT_EXECUTABLE;
       const std::string run_output =
         run_clean(program + " " + directory + ".prm");
-      log() << n_ranks << " rank(s): run "
+      log() << n_ranks << " rank(s), at most " << cells_per_piece
+            << " cells per piece: run "
             << check(run_output.find("command failed") == std::string::npos)
-            << "\n";
+            << ", pieces in the last record: "
+            << count_pieces(directory + "/solution_00050.pvtu") << "\n";
       log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
                          "/check_vtu.py " + directory);
     }

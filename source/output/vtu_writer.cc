@@ -77,6 +77,15 @@ namespace dyncontact
                       "files, quickest to write), fast (zlib's fastest "
                       "level: files about as small, written several times "
                       "faster than with best) or best (smallest files).");
+    prm.declare_entry(
+      "Cells per piece",
+      "65536",
+      Patterns::Integer(1),
+      "Each rank writes its cells as VTU pieces (one .vtu file each, all "
+      "listed in the .pvtu record) of at most this many cells. A write needs "
+      "memory for one piece's patches and compressed data beyond the run's "
+      "own: about 1.2 kB per cell in 3D with linear elements, 80 MB per "
+      "piece by default.");
     prm.leave_subsection();
   }
 
@@ -89,9 +98,10 @@ namespace dyncontact
     prm.enter_subsection("Output");
     write_vtu                = prm.get_bool("Write vtu");
     const std::string choice = prm.get("Compression");
-    compression = choice == "none" ? DataOutBase::VtkFlags::no_compression :
-                  choice == "fast" ? DataOutBase::VtkFlags::best_speed :
-                                     DataOutBase::VtkFlags::best_compression;
+    compression     = choice == "none" ? DataOutBase::VtkFlags::no_compression :
+                      choice == "fast" ? DataOutBase::VtkFlags::best_speed :
+                                         DataOutBase::VtkFlags::best_compression;
+    cells_per_piece = prm.get_integer("Cells per piece");
     prm.leave_subsection();
   }
 
@@ -157,50 +167,137 @@ namespace dyncontact
     critical_g = critical;
     gap_g      = gap;
 
-    DataOut<dim> data_out;
-    data_out.attach_triangulation(triangulation);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(dim,
-                   DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(system.get_dof_handler(),
-                             u_ghosted,
-                             std::vector<std::string>(dim, "displacement"),
-                             vector_field);
-    data_out.add_data_vector(system.get_dof_handler(),
-                             v_ghosted,
-                             std::vector<std::string>(dim, "velocity"),
-                             vector_field);
-    const VonMisesPostprocessor<dim> von_mises(this->get_scene());
-    data_out.add_data_vector(system.get_dof_handler(), u_ghosted, von_mises);
-    data_out.add_data_vector(system.get_scalar_dof_handler(),
-                             pressure_g,
-                             "contact_pressure");
-    data_out.add_data_vector(system.get_scalar_dof_handler(),
-                             active_g,
-                             "active_set");
-    data_out.add_data_vector(system.get_scalar_dof_handler(),
-                             critical_g,
-                             "critical_set");
-    if (!this->get_scene().contact_pairs().empty())
-      data_out.add_data_vector(system.get_scalar_dof_handler(), gap_g, "gap");
     Vector<float> subdomain(triangulation.n_active_cells());
     for (auto &s : subdomain)
       s = triangulation.locally_owned_subdomain();
-    data_out.add_data_vector(subdomain, "subdomain");
     Vector<float> level(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         level(cell->active_cell_index()) = cell->level();
-    data_out.add_data_vector(level, "refinement_level");
-    data_out.build_patches(this->get_mapping(), system.get_fe().degree);
+    const VonMisesPostprocessor<dim> von_mises(this->get_scene());
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+                          vector_field(dim,
+                   DataComponentInterpretation::component_is_part_of_vector);
     DataOutBase::VtkFlags flags;
     flags.compression_level =
       static_cast<DataOutBase::VtkFlags::ZlibCompressionLevel>(compression);
-    data_out.set_flags(flags);
 
+    // The rank's cells are written in pieces of at most cells_per_piece
+    // cells ('Cells per piece'), each from its own patches: the memory a
+    // write needs beyond the run's is that of one piece (0.4 GB for the
+    // 338 000 cells of a 3D mesh with 1e6 DoFs in one piece). Piece k of the
+    // rank's cells starts at the cell first_cell[k] and ends before the active
+    // cell index end_index[k].
+    using active_cell_iterator =
+      typename Triangulation<dim>::active_cell_iterator;
+    std::vector<active_cell_iterator> first_cell;
+    std::vector<unsigned int>         end_index;
+    unsigned int                      n_owned = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && n_owned++ % cells_per_piece == 0)
+        {
+          if (!first_cell.empty())
+            end_index.push_back(cell->active_cell_index());
+          first_cell.push_back(cell);
+        }
+    if (first_cell.empty())
+      first_cell.push_back(active_cell_iterator(triangulation.end()));
+    end_index.push_back(triangulation.n_active_cells());
+    const unsigned int n_pieces = first_cell.size();
+    // the pieces are numbered over all ranks, rank by rank: with one piece
+    // per rank, piece number = rank (the names deal.II's
+    // write_vtu_with_pvtu_record() gives)
+    const std::vector<unsigned int> pieces_of_rank =
+      Utilities::MPI::all_gather(comm, n_pieces);
+    const unsigned int rank            = Utilities::MPI::this_mpi_process(comm);
+    unsigned int       n_global_pieces = 0, my_first_piece = 0;
+    for (unsigned int r = 0; r < pieces_of_rank.size(); ++r)
+      {
+        if (r == rank)
+          my_first_piece = n_global_pieces;
+        n_global_pieces += pieces_of_rank[r];
+      }
     const std::string directory = this->get_parameters().output_directory;
-    const std::string pvtu      = data_out.write_vtu_with_pvtu_record(
-      directory + "/", "solution", output_counter, comm, 5);
+    const std::string base =
+      "solution_" + Utilities::int_to_string(output_counter, 5) + ".";
+    const unsigned int n_digits =
+      Utilities::needed_digits(std::max(0, int(n_global_pieces) - 1));
+
+    using cell_iterator = typename Triangulation<dim>::cell_iterator;
+    for (unsigned int k = 0; k < n_pieces; ++k)
+      {
+        DataOut<dim> data_out;
+        data_out.attach_triangulation(triangulation);
+        // the locally owned active cells from first_cell[k] on, with an
+        // active cell index below end_index[k]
+        const unsigned int end        = end_index[k];
+        const auto         next_owned = [end](const Triangulation<dim> &tria,
+                                      active_cell_iterator      cell) {
+          for (; cell != tria.end() && cell->active_cell_index() < end; ++cell)
+            if (cell->is_locally_owned())
+              return cell_iterator(cell);
+          return cell_iterator(tria.end());
+        };
+        const active_cell_iterator first = first_cell[k];
+        data_out.set_cell_selection(
+          [first, next_owned](const Triangulation<dim> &tria) {
+            return next_owned(tria, first);
+          },
+          [next_owned](const Triangulation<dim> &tria,
+                       const cell_iterator      &cell) {
+            active_cell_iterator next(cell);
+            return next_owned(tria, ++next);
+          });
+        data_out.add_data_vector(system.get_dof_handler(),
+                                 u_ghosted,
+                                 std::vector<std::string>(dim, "displacement"),
+                                 vector_field);
+        data_out.add_data_vector(system.get_dof_handler(),
+                                 v_ghosted,
+                                 std::vector<std::string>(dim, "velocity"),
+                                 vector_field);
+        data_out.add_data_vector(system.get_dof_handler(),
+                                 u_ghosted,
+                                 von_mises);
+        data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                 pressure_g,
+                                 "contact_pressure");
+        data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                 active_g,
+                                 "active_set");
+        data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                 critical_g,
+                                 "critical_set");
+        if (!this->get_scene().contact_pairs().empty())
+          data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                   gap_g,
+                                   "gap");
+        data_out.add_data_vector(subdomain, "subdomain");
+        data_out.add_data_vector(level, "refinement_level");
+        data_out.build_patches(this->get_mapping(), system.get_fe().degree);
+        data_out.set_flags(flags);
+        std::ofstream file(
+          directory + "/" + base +
+          Utilities::int_to_string(my_first_piece + k, n_digits) + ".vtu");
+        data_out.write_vtu(file);
+        AssertThrow(file.good(),
+                    ExcMessage("Writing the VTU file '" + directory + "/" +
+                               base + "...vtu' failed (disk full?)."));
+        if (rank == 0 && k == 0)
+          {
+            // the record of all pieces: any piece's DataOut knows the fields
+            std::vector<std::string> piece_names;
+            for (unsigned int i = 0; i < n_global_pieces; ++i)
+              piece_names.push_back(
+                base + Utilities::int_to_string(i, n_digits) + ".vtu");
+            std::ofstream record(directory + "/solution_" +
+                                 Utilities::int_to_string(output_counter, 5) +
+                                 ".pvtu");
+            data_out.write_pvtu_record(record, piece_names);
+          }
+      }
+    const std::string pvtu =
+      "solution_" + Utilities::int_to_string(output_counter, 5) + ".pvtu";
     ++output_counter;
     pvd_records.emplace_back(time, pvtu);
     if (Utilities::MPI::this_mpi_process(comm) == 0)

@@ -51,8 +51,9 @@ namespace dyncontact
   private:
     bool write_vtu = true;
     /// DataOutBase::VtkFlags::ZlibCompressionLevel
-    int                                         compression    = 0;
-    unsigned int                                output_counter = 0;
+    int                                         compression     = 0;
+    unsigned int                                cells_per_piece = 65536;
+    unsigned int                                output_counter  = 0;
     std::vector<std::pair<double, std::string>> pvd_records;
   };
 } // namespace dyncontact
