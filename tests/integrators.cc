@@ -67,12 +67,15 @@ one_step(const std::string                      &scheme,
   system.M_lumped  = &M_lumped;
   system.A_product = &A_product;
   system.B_vmult = [&B](VectorType &y, const VectorType &x) { B.vmult(y, x); };
-  system.assemble_stiffness =
-    [&A, &B](MatrixType &matrix, const double a, const double b) {
-      matrix.copy_from(A);
-      matrix *= a;
-      matrix.add(b, B);
-    };
+  system.assemble_stiffness = [&A, &B, &system](MatrixType  &matrix,
+                                                const double a,
+                                                const double b,
+                                                const double m) {
+    matrix.copy_from(A);
+    matrix *= a;
+    matrix.add(b, B);
+    system.add_mass(matrix, m);
+  };
   system.f = &f;
   ContactRows rows;
   rows.rows                  = {row};

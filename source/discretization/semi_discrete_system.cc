@@ -411,9 +411,15 @@ namespace dyncontact
   void
   SemiDiscreteSystem<dim>::assemble_stiffness_matrix(MatrixType  &matrix,
                                                      const double a,
-                                                     const double b) const
+                                                     const double b,
+                                                     const double m) const
   {
     matrix.reinit(sparsity);
+    // a lumped m M goes onto the diagonal in the first cell of each owned
+    // row (a locally owned DoF lies on a locally owned cell)
+    const bool lumped_mass_in_cells = (m != 0. && parameters.lumped_mass);
+    std::vector<bool> mass_added(
+      lumped_mass_in_cells ? locally_owned.n_elements() : 0, false);
     // Every shape function of FE_Q<dim>^dim is a scalar shape function
     // phi_k of FE_Q times a unit vector e_c, so the element matrices follow
     // from the scalar gradients (a third of the work of the vector
@@ -441,6 +447,35 @@ namespace dyncontact
     std::vector<double> laplace(n_nodes * n_nodes);
     std::vector<Tensor<1, dim>> gradients(n_nodes);
 
+    // H and the scalar Laplacian sum_c H^cc_kl of the cell in fe_values
+    const auto compute_products = [&]() {
+      std::fill(gradient_products.begin(), gradient_products.end(), 0.);
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        {
+          const double JxW = fe_values.JxW(q);
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            gradients[k] = fe_values.shape_grad(k, q);
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                double *H =
+                  &gradient_products[(c * dim + d) * n_nodes * n_nodes];
+                for (unsigned int k = 0; k < n_nodes; ++k)
+                  {
+                    const double left = gradients[k][c] * JxW;
+                    for (unsigned int l = 0; l < n_nodes; ++l)
+                      H[k * n_nodes + l] += left * gradients[l][d];
+                  }
+              }
+        }
+      std::fill(laplace.begin(), laplace.end(), 0.);
+      for (unsigned int c = 0; c < dim; ++c)
+        for (unsigned int kl = 0; kl < n_nodes * n_nodes; ++kl)
+          laplace[kl] +=
+            gradient_products[(c * dim + c) * n_nodes * n_nodes + kl];
+    };
+    bool have_products = false;
+
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -452,38 +487,19 @@ namespace dyncontact
                                 (b != 0. ? b * material.viscous_lambda : 0.);
           fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
 
-          std::fill(gradient_products.begin(), gradient_products.end(), 0.);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const double JxW = fe_values.JxW(q);
-              for (unsigned int k = 0; k < n_nodes; ++k)
-                gradients[k] = fe_values.shape_grad(k, q);
-              for (unsigned int c = 0; c < dim; ++c)
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    double *H =
-                      &gradient_products[(c * dim + d) * n_nodes * n_nodes];
-                    for (unsigned int k = 0; k < n_nodes; ++k)
-                      {
-                        const double left = gradients[k][c] * JxW;
-                        for (unsigned int l = 0; l < n_nodes; ++l)
-                          H[k * n_nodes + l] += left * gradients[l][d];
-                      }
-                  }
-            }
-          const auto H = [&](const unsigned int c,
+          // a translation of the cell before has the same H (deal.II's
+          // FEValues recognises it on a mapping of degree 1)
+          if (fe_values.get_cell_similarity() != CellSimilarity::translation ||
+              !have_products)
+            compute_products();
+          have_products = true;
+          const auto H  = [&](const unsigned int c,
                              const unsigned int d,
                              const unsigned int k,
                              const unsigned int l) {
             return gradient_products[(c * dim + d) * n_nodes * n_nodes +
                                      k * n_nodes + l];
           };
-          // the scalar Laplacian sum_c H^cc_kl
-          std::fill(laplace.begin(), laplace.end(), 0.);
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int kl = 0; kl < n_nodes * n_nodes; ++kl)
-              laplace[kl] +=
-                gradient_products[(c * dim + c) * n_nodes * n_nodes + kl];
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             {
               const unsigned int c = component[i], k = node[i];
@@ -496,9 +512,24 @@ namespace dyncontact
                 }
             }
           cell->get_dof_indices(dof_indices);
+          if (lumped_mass_in_cells)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              if (locally_owned.is_element(dof_indices[i]))
+                {
+                  const auto row =
+                    locally_owned.index_within_set(dof_indices[i]);
+                  if (!mass_added[row])
+                    {
+                      cell_matrix(i, i) +=
+                        m * lumped_mass_diagonal(dof_indices[i]);
+                      mass_added[row] = true;
+                    }
+                }
           matrix.add(dof_indices, cell_matrix);
         }
     matrix.compress(VectorOperation::add);
+    if (m != 0. && !parameters.lumped_mass)
+      matrix.add(m, mass_matrix);
   }
 
 
@@ -667,10 +698,12 @@ namespace dyncontact
       system.B_vmult = [this](VectorType &y, const VectorType &x) {
         viscous_vmult(y, x);
       };
-    system.assemble_stiffness =
-      [this](MatrixType &matrix, const double a, const double b) {
-        assemble_stiffness_matrix(matrix, a, b);
-      };
+    system.assemble_stiffness = [this](MatrixType  &matrix,
+                                       const double a,
+                                       const double b,
+                                       const double m) {
+      assemble_stiffness_matrix(matrix, a, b, m);
+    };
     system.f = &load;
     return system;
   }

@@ -42,7 +42,7 @@ namespace dyncontact
         // condensed operator does not have. 3D ball on block, static, 18e3
         // and 96e3 DoFs: 2366 and 3304 CG iterations at eps = 1e-6, 1020
         // and 1390 at 1e-2, 2010 at 1e-1 (96e3).
-        system.assemble_stiffness(preconditioner_matrix, 1., 0.);
+        system.assemble_stiffness(preconditioner_matrix, 1., 0., 0.);
         system.add_mass(preconditioner_matrix,
                         1e-2 * preconditioner_matrix.linfty_norm() /
                           system.mass_linfty_norm());
@@ -75,17 +75,16 @@ namespace dyncontact
     solver.set_near_null_space(near_null_space);
     if (is_static)
       {
-        system.assemble_stiffness(S, 1., 0.);
+        system.assemble_stiffness(S, 1., 0., 0.);
         solver.set_matrix(S, &preconditioner_matrix);
       }
     else
       {
-        // S = M + tau^2/4 A + tau/2 B: tau^2/4 A + tau/2 B assembled cell by
-        // cell, then the mass added
+        // S = M + tau^2/4 A + tau/2 B, assembled cell by cell
         system.assemble_stiffness(S,
                                   tau * tau / 4.,
-                                  system.viscous() ? tau / 2. : 0.);
-        system.add_mass(S, 1.);
+                                  system.viscous() ? tau / 2. : 0.,
+                                  1.);
         solver.set_matrix(S);
         // how far the stiffness and viscosity outweigh the mass in S
         double ratio = 1.;

@@ -74,9 +74,9 @@ namespace dyncontact
     const VectorType    *M_lumped  = nullptr;
     const CachedProduct *A_product = nullptr;
     Product              B_vmult;
-    /// matrix = a A + b B, on the sparsity pattern of M (which the matrix
-    /// is given).
-    std::function<void(MatrixType &matrix, double a, double b)>
+    /// matrix = a A + b B + m M, on the sparsity pattern of the
+    /// unconstrained operator (which the matrix is given).
+    std::function<void(MatrixType &matrix, double a, double b, double m)>
                       assemble_stiffness;
     const VectorType *f = nullptr;
 
@@ -262,12 +262,14 @@ namespace dyncontact
     {
       elastic_operator.vmult(y, x, ElasticOperator<dim>::Form::viscous);
     }
-    /// @p matrix = a A + b B, assembled cell by cell on the sparsity pattern
-    /// of the unconstrained operator.
+    /// @p matrix = a A + b B + m M, assembled cell by cell on the sparsity
+    /// pattern of the unconstrained operator (a lumped M on the diagonal in
+    /// the cell loop, a consistent M added afterwards).
     void
     assemble_stiffness_matrix(MatrixType  &matrix,
                               const double a,
-                              const double b) const;
+                              const double b,
+                              const double m) const;
     const VectorType &
     get_load() const
     {
