@@ -26,10 +26,18 @@ namespace dyncontact
    * and the viscous form b(u, v) (the same with mu_v, lambda_v) applied
    * without a matrix (deal.II's MatrixFree, sum factorisation, Gauss
    * quadrature of p + 1 points per direction as in the assembly): A x and
-   * B x for the right-hand side and the energy of every step, on the
-   * unconstrained space (as the assembled matrices, constraints are the
-   * active-set solver's). The time step's matrix S is assembled; A and B
-   * are never stored, which saves one value per matrix entry.
+   * B x for the right-hand side and the energy of every step. The time
+   * step's matrix S is assembled; A and B are never stored, which saves one
+   * value per matrix entry.
+   *
+   * Without hanging nodes this is the unconstrained operator, as assembled
+   * (the constraints are the active-set solver's). With hanging nodes,
+   * deal.II 9.4's MatrixFree always applies their constraints: a hanging
+   * DoF is read from its parents and its row is added to theirs. For x that
+   * satisfies the constraints (every state of a run) that is A x with the
+   * hanging rows condensed onto their parents, as the active-set solver
+   * condenses its right-hand side anyway, and w^T A x is the same for every
+   * such w (tests/elastic_operator).
    */
   template <int dim>
   class ElasticOperator
