@@ -18,6 +18,26 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// The displacement component and the scalar FE_Q shape function of
+    /// each shape function of FE_Q<dim>^dim.
+    template <int dim>
+    std::pair<std::vector<unsigned int>, std::vector<unsigned int>>
+    components_and_nodes(const FESystem<dim> &fe)
+    {
+      std::vector<unsigned int> component(fe.n_dofs_per_cell()),
+        node(fe.n_dofs_per_cell());
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          component[i] = fe.system_to_component_index(i).first;
+          node[i]      = fe.system_to_component_index(i).second;
+        }
+      return {component, node};
+    }
+  } // namespace
+
+
   template <int dim>
   void
   SemiDiscreteSystem<dim>::Parameters::declare_parameters(ParameterHandler &prm)
@@ -275,12 +295,7 @@ namespace dyncontact
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
 
     // component and scalar shape function of each shape function
-    std::vector<unsigned int> component(dofs_per_cell), node(dofs_per_cell);
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      {
-        component[i] = fe.system_to_component_index(i).first;
-        node[i]      = fe.system_to_component_index(i).second;
-      }
+    const auto [component, node] = components_and_nodes(fe);
     // the scalar mass int phi_k phi_l and load int phi_k
     std::vector<double> scalar_mass(n_nodes * n_nodes);
     std::vector<double> scalar_load(n_nodes);
@@ -436,12 +451,7 @@ namespace dyncontact
     const unsigned int n_nodes       = scalar_fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    std::vector<unsigned int> component(dofs_per_cell), node(dofs_per_cell);
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      {
-        component[i] = fe.system_to_component_index(i).first;
-        node[i]      = fe.system_to_component_index(i).second;
-      }
+    const auto [component, node] = components_and_nodes(fe);
     // H^ab_kl at [(a * dim + b) * n_nodes * n_nodes + k * n_nodes + l]
     std::vector<double> gradient_products(dim * dim * n_nodes * n_nodes);
     std::vector<double> laplace(n_nodes * n_nodes);
