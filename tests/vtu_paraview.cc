@@ -4,7 +4,9 @@
 // (tests/check_vtu.py), which checks that all fields are there and that the
 // mesh warped by the displacement puts the bar's end where the exact
 // solution puts it (free flight, in contact at the wall, after release).
-// Then a two-bars run (tests/check_two_bodies.py): the gap field on the
+// Then 2-rank runs whose ranks write different numbers of pieces, or none
+// (tests/check_pieces.py: every listed piece exists, all cells are there),
+// and a two-bars run (tests/check_two_bodies.py): the gap field on the
 // slave face and the contact pressure on both sides.
 
 #include "tests.h"
@@ -58,6 +60,26 @@ main(int argc, char **argv)
             << count_pieces(directory + "/solution_00050.pvtu") << "\n";
       log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
                          "/check_vtu.py " + directory);
+    }
+
+  // ranks with different numbers of pieces (3 cells on 2 ranks, one cell
+  // per piece), and a rank without cells (1 cell on 2 ranks): each rank
+  // takes part in the collective rounds of the others' pieces
+  for (const unsigned int n_cells : {3u, 1u})
+    {
+      const std::string directory = "results-uneven-" + std::to_string(n_cells);
+      std::ofstream(directory + ".prm")
+        << bar_prm(2, "N-CS++", n_cells, 0.0125, 0.1)
+        << "set Output directory = " << directory << "\n"
+        << "subsection Output\n  set Write vtu = true\n"
+        << "  set Output interval = 0.05\n  set Cells per piece = 1\nend\n";
+      log() << n_cells << " cell(s) on 2 ranks, 1 cell per piece: run "
+            << check(run_clean(std::string(DYNCONTACT_MPIEXEC) + " -np 2 " +
+                               DYNCONTACT_EXECUTABLE + " " + directory + ".prm")
+                       .find("command failed") == std::string::npos)
+            << "\n";
+      log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
+                         "/check_pieces.py " + directory);
     }
 
   std::ofstream("two-bars.prm")

@@ -9,6 +9,7 @@
 #include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/time_stepping/row_force.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -200,9 +201,9 @@ namespace dyncontact
             end_index.push_back(cell->active_cell_index());
           first_cell.push_back(cell);
         }
-    if (first_cell.empty())
-      first_cell.push_back(active_cell_iterator(triangulation.end()));
     end_index.push_back(triangulation.n_active_cells());
+    // (a rank without cells writes no piece: ParaView complains about a
+    // piece without points)
     const unsigned int n_pieces = first_cell.size();
     // the pieces are numbered over all ranks, rank by rank: with one piece
     // per rank, piece number = rank (the names deal.II's
@@ -223,14 +224,22 @@ namespace dyncontact
     const unsigned int n_digits =
       Utilities::needed_digits(std::max(0, int(n_global_pieces) - 1));
 
+    // Adding a distributed vector to a DataOut is collective (its ghost
+    // entries are exchanged): every rank takes part in as many rounds as
+    // the rank with the most pieces, with no cells selected once its own
+    // pieces are written.
+    const unsigned int n_rounds =
+      *std::max_element(pieces_of_rank.begin(), pieces_of_rank.end());
+    bool write_failed   = false;
     using cell_iterator = typename Triangulation<dim>::cell_iterator;
-    for (unsigned int k = 0; k < n_pieces; ++k)
+    for (unsigned int k = 0; k < n_rounds; ++k)
       {
+        const bool   mine = (k < n_pieces);
         DataOut<dim> data_out;
         data_out.attach_triangulation(triangulation);
         // the locally owned active cells from first_cell[k] on, with an
-        // active cell index below end_index[k]
-        const unsigned int end        = end_index[k];
+        // active cell index below end_index[k] (none if not mine)
+        const unsigned int end        = mine ? end_index[k] : 0;
         const auto         next_owned = [end](const Triangulation<dim> &tria,
                                       active_cell_iterator      cell) {
           for (; cell != tria.end() && cell->active_cell_index() < end; ++cell)
@@ -238,7 +247,8 @@ namespace dyncontact
               return cell_iterator(cell);
           return cell_iterator(tria.end());
         };
-        const active_cell_iterator first = first_cell[k];
+        const active_cell_iterator first =
+          mine ? first_cell[k] : active_cell_iterator(triangulation.end());
         data_out.set_cell_selection(
           [first, next_owned](const Triangulation<dim> &tria) {
             return next_owned(tria, first);
@@ -276,13 +286,14 @@ namespace dyncontact
         data_out.add_data_vector(level, "refinement_level");
         data_out.build_patches(this->get_mapping(), system.get_fe().degree);
         data_out.set_flags(flags);
-        std::ofstream file(
-          directory + "/" + base +
-          Utilities::int_to_string(my_first_piece + k, n_digits) + ".vtu");
-        data_out.write_vtu(file);
-        AssertThrow(file.good(),
-                    ExcMessage("Writing the VTU file '" + directory + "/" +
-                               base + "...vtu' failed (disk full?)."));
+        if (mine)
+          {
+            std::ofstream file(
+              directory + "/" + base +
+              Utilities::int_to_string(my_first_piece + k, n_digits) + ".vtu");
+            data_out.write_vtu(file);
+            write_failed = write_failed || !file.good();
+          }
         if (rank == 0 && k == 0)
           {
             // the record of all pieces: any piece's DataOut knows the fields
@@ -294,8 +305,15 @@ namespace dyncontact
                                  Utilities::int_to_string(output_counter, 5) +
                                  ".pvtu");
             data_out.write_pvtu_record(record, piece_names);
+            write_failed = write_failed || !record.good();
           }
       }
+    // (on every rank: a rank that stopped alone would leave the others
+    // waiting in the next collective call)
+    AssertThrow(!Utilities::MPI::logical_or(write_failed, comm),
+                ExcMessage(
+                  "Writing the VTU files '" + directory + "/" + base +
+                  "*.vtu' or their .pvtu record failed (disk full?)."));
     const std::string pvtu =
       "solution_" + Utilities::int_to_string(output_counter, 5) + ".pvtu";
     ++output_counter;
