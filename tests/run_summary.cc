@@ -66,13 +66,12 @@ main(int argc, char **argv)
   // the banner
   log() << "banner names the body's DoFs, the obstacle without search, the "
            "elastic material, tau and the steps: "
-        << check(run.text.find("body 1: 410 DoFs") != std::string::npos &&
-                 run.text.find("rigid obstacle (no contact search), 5 rows") !=
-                   std::string::npos &&
-                 run.text.find("elastic (no viscous form)") !=
-                   std::string::npos &&
-                 run.text.find("tau = 0.0125 s, 200 steps") !=
-                   std::string::npos)
+        << check(
+             run.text.find("body 1: 410 DoFs") != std::string::npos &&
+             run.text.find("rigid obstacle (no contact search), 5 rows") !=
+               std::string::npos &&
+             run.text.find("elastic (no viscous form)") != std::string::npos &&
+             run.text.find("tau = 0.0125 s, 200 steps") != std::string::npos)
         << "\n";
   log() << "no progress lines in a short run: "
         << check(run.text.find("s/step") == std::string::npos) << "\n";

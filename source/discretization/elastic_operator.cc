@@ -83,7 +83,7 @@ namespace dyncontact
     additional_data.tasks_parallel_scheme =
       MatrixFree<dim, double>::AdditionalData::none;
     additional_data.mapping_update_flags = update_gradients | update_JxW_values;
-    // the unconstrained operator, like the assembled matrices
+    // no constraints of ours (hanging nodes: see the class documentation)
     AffineConstraints<double> no_constraints;
     no_constraints.close();
     data->matrix_free.reinit(mapping,
@@ -138,18 +138,6 @@ namespace dyncontact
         data->src,
         true);
     std::copy(data->dst.begin(), data->dst.end(), dst.begin());
-  }
-
-
-
-  template <int dim>
-  std::size_t
-  ElasticOperator<dim>::memory_consumption() const
-  {
-    return data->matrix_free.memory_consumption() +
-           data->src.memory_consumption() + data->dst.memory_consumption() +
-           2 * data->elastic_moduli.size() *
-             sizeof(std::array<VectorizedArray<double>, 2>);
   }
 
 

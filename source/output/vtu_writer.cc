@@ -219,8 +219,10 @@ namespace dyncontact
         n_global_pieces += pieces_of_rank[r];
       }
     const std::string directory = this->get_parameters().output_directory;
-    const std::string base =
-      "solution_" + Utilities::int_to_string(output_counter, 5) + ".";
+    const std::string stem =
+      "solution_" + Utilities::int_to_string(output_counter, 5);
+    const std::string  base = stem + ".";
+    const std::string  pvtu = stem + ".pvtu";
     const unsigned int n_digits =
       Utilities::needed_digits(std::max(0, int(n_global_pieces) - 1));
 
@@ -301,9 +303,7 @@ namespace dyncontact
             for (unsigned int i = 0; i < n_global_pieces; ++i)
               piece_names.push_back(
                 base + Utilities::int_to_string(i, n_digits) + ".vtu");
-            std::ofstream record(directory + "/solution_" +
-                                 Utilities::int_to_string(output_counter, 5) +
-                                 ".pvtu");
+            std::ofstream record(directory + "/" + pvtu);
             data_out.write_pvtu_record(record, piece_names);
             write_failed = write_failed || !record.good();
           }
@@ -314,8 +314,6 @@ namespace dyncontact
                 ExcMessage(
                   "Writing the VTU files '" + directory + "/" + base +
                   "*.vtu' or their .pvtu record failed (disk full?)."));
-    const std::string pvtu =
-      "solution_" + Utilities::int_to_string(output_counter, 5) + ".pvtu";
     ++output_counter;
     pvd_records.emplace_back(time, pvtu);
     if (Utilities::MPI::this_mpi_process(comm) == 0)

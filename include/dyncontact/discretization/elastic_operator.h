@@ -65,10 +65,6 @@ namespace dyncontact
           const TrilinosWrappers::MPI::Vector &src,
           const Form                           form) const;
 
-    /// Memory of the matrix-free data, in bytes.
-    std::size_t
-    memory_consumption() const;
-
   private:
     struct Data;
     std::unique_ptr<Data> data;

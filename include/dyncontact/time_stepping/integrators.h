@@ -165,9 +165,11 @@ namespace dyncontact
     /// S for one tau with its active-set solver (which holds the AMG).
     struct StepMatrix
     {
-      double                           tau           = 0.;
-      double                           inertia_ratio = 1.;
-      MatrixType                       S;
+      double     tau           = 0.;
+      double     inertia_ratio = 1.;
+      MatrixType S;
+      /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
+      MatrixType                       preconditioner;
       std::unique_ptr<ActiveSetSolver> solver;
     };
 
@@ -183,8 +185,6 @@ namespace dyncontact
     const AffineConstraints<double>     *mesh_constraints;
     const ActiveSetSolver::NearNullSpace near_null_space;
     const MPI_Comm                       comm;
-    /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
-    MatrixType preconditioner_matrix;
     /// the step matrices of tau levels, the most recently used last
     std::vector<std::unique_ptr<StepMatrix>> levels;
     /// a shortened step's matrix (not a level)
