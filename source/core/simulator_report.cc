@@ -24,13 +24,8 @@ namespace dyncontact
   {
     // DoFs per body
     std::vector<types::global_dof_index> body_dofs;
-    for (const auto &components : system->get_body_component_dofs())
-      {
-        types::global_dof_index n = 0;
-        for (const IndexSet &dofs : components)
-          n += dofs.n_elements();
-        body_dofs.push_back(Utilities::MPI::sum(n, comm));
-      }
+    for (const auto n : system->n_locally_owned_body_dofs())
+      body_dofs.push_back(Utilities::MPI::sum(n, comm));
     std::ostringstream text;
     text << std::setprecision(6) << "   bodies: " << body_dofs.size() << " (";
     for (unsigned int b = 0; b < body_dofs.size(); ++b)

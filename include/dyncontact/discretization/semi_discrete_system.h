@@ -281,11 +281,11 @@ namespace dyncontact
     {
       return boundary_weights;
     }
-    /// Locally owned DoFs of each body and displacement component.
-    const std::vector<std::vector<IndexSet>> &
-    get_body_component_dofs() const
+    /// The number of locally owned DoFs of each body.
+    const std::vector<types::global_dof_index> &
+    n_locally_owned_body_dofs() const
     {
-      return body_component_dofs;
+      return n_owned_body_dofs;
     }
     /// For each locally owned DoF, in the order of the vectors' local
     /// entries: body * dim + component.
@@ -305,8 +305,10 @@ namespace dyncontact
     /// computed on each call.
     std::vector<VectorType>
     rotation_modes() const;
-    /// Component-0 system DoF -> scalar DoF, for the nodes owned here.
-    const std::map<types::global_dof_index, types::global_dof_index> &
+    /// (component-0 system DoF, scalar DoF) of each node owned here, in the
+    /// order of the cells.
+    const std::vector<
+      std::pair<types::global_dof_index, types::global_dof_index>> &
     get_owned_system0_to_scalar() const
     {
       return owned_system0_to_scalar;
@@ -324,15 +326,15 @@ namespace dyncontact
     FE_Q<dim>       scalar_fe;
     DoFHandler<dim> scalar_dof_handler;
 
-    IndexSet                           locally_owned;
-    IndexSet                           locally_relevant;
-    IndexSet                           scalar_locally_owned;
-    IndexSet                           scalar_locally_relevant;
-    AffineConstraints<double>          constraints;
-    std::vector<std::vector<IndexSet>> body_component_dofs;
-    std::vector<unsigned char>         owned_dof_slots;
-    std::vector<std::vector<bool>>     constant_modes;
-    std::map<types::global_dof_index, types::global_dof_index>
+    IndexSet                             locally_owned;
+    IndexSet                             locally_relevant;
+    IndexSet                             scalar_locally_owned;
+    IndexSet                             scalar_locally_relevant;
+    AffineConstraints<double>            constraints;
+    std::vector<types::global_dof_index> n_owned_body_dofs;
+    std::vector<unsigned char>           owned_dof_slots;
+    std::vector<std::vector<bool>>       constant_modes;
+    std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
       owned_system0_to_scalar;
 
     /// of the unconstrained operator, shared by the matrices built on it
