@@ -14,11 +14,13 @@ the mean of a free and a contact step, the shares of those diagnostics, of
 the sampled error norms and of output in the time loop, one VTU write in
 steps, and RSS per DoF; then the exponents of a power-law fit against
 DoFs, and the 1-vs-2-rank ratio of the time loop at the size nearest to
-2.6e5 DoFs. With --tau T every size steps with the same tau = T (AMG
-at fixed tau: the CG iterations should not grow with the DoFs), and no
-2-rank run is made.
+2.6e5 DoFs. With --tau T every size steps with the same tau = T (the
+preconditioner at fixed tau: the CG iterations should not grow with the
+DoFs), and no 2-rank run is made. --preconditioner P sets 'Contact
+solver/Preconditioner' (default: the program's, automatic).
 Usage, from the repository's top folder after tools/setup.sh:
-    benchmarks/scaling.py [build/dyncontact] [--tau T] [N1 N2 ...]"""
+    benchmarks/scaling.py [build/dyncontact] [--tau T] [--preconditioner P]
+                          [N1 N2 ...]"""
 import csv
 import math
 import os
@@ -31,6 +33,11 @@ fixed_tau = None
 if "--tau" in arguments:
     k = arguments.index("--tau")
     fixed_tau = float(arguments[k + 1])
+    del arguments[k:k + 2]
+preconditioner = None
+if "--preconditioner" in arguments:
+    k = arguments.index("--preconditioner")
+    preconditioner = arguments[k + 1]
     del arguments[k:k + 2]
 executable = arguments[0] if arguments else "build/dyncontact"
 sizes = [int(n) for n in arguments[1:]] or [60, 80, 100, 120, 160, 200]
@@ -52,7 +59,8 @@ def coarse_mesh(cells):
 
 def run(cells, ranks=1):
     name = "bar3d-%d-np%d" % (cells, ranks) + \
-        ("-tau%g" % fixed_tau if fixed_tau else "")
+        ("-tau%g" % fixed_tau if fixed_tau else "") + \
+        ("-" + preconditioner if preconditioner else "")
     tau = fixed_tau or 0.5 / cells
     coarse, refinements = coarse_mesh(cells)
     directory = "results-scaling/" + name
@@ -79,7 +87,9 @@ end
 subsection Output
   set Output interval = %.17g
 end
-""" % (directory, coarse, 8 * tau, refinements, tau, 16 * tau, 16 * tau))
+""" % (directory, coarse, 8 * tau, refinements, tau, 16 * tau, 16 * tau) +
+                ("subsection Contact solver\n  set Preconditioner = %s\nend\n"
+                 % preconditioner if preconditioner else ""))
     command = ["/usr/bin/time", "-v"]
     if ranks > 1:
         command += ["mpirun", "-np", str(ranks)]

@@ -55,7 +55,10 @@ main(int argc, char **argv)
       const double p_end = s.has_column("momentum_x_body2") ?
                              s.column("momentum_x_body2").back() :
                              s.column("momentum_x").back();
-      log() << "  rebound velocity / v0 = " << fmt(p_end / (L * H), 2) << ": "
+      // (not printed: the refinement breaks ties between equal Kelly
+      // indicators of the symmetric mesh by round-off, which moves the
+      // rebound velocity by about 1%)
+      log() << "  rebound velocity within 5% of v0: "
             << check(std::abs(p_end / (L * H) - 1.) <= 0.05) << "\n";
 
       const auto dofs = s.column("dofs");

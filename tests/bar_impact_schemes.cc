@@ -74,6 +74,6 @@ main(int argc, char **argv)
       log() << "  E_total + dissipation non-increasing: "
             << check(growth <= 1e-10 * e0) << "\n";
       log() << "  energy after release / before impact = "
-            << fmt(s.column("energy_total").back() / e0, 3) << "\n";
+            << fmt(s.column("energy_total").back() / e0, 4) << "\n";
     }
 }

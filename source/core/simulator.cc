@@ -190,7 +190,7 @@ namespace dyncontact
   void
   Simulator<dim>::make_integrator()
   {
-    TimerOutput::Scope t(*timer, "setup: step matrix and AMG");
+    TimerOutput::Scope t(*timer, "setup: step matrix and preconditioner");
     if (integrator)
       n_step_matrices += integrator->get_operators().n_step_matrices_built;
     ActiveSetSolver::NearNullSpace near_null_space;

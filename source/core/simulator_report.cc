@@ -45,7 +45,13 @@ namespace dyncontact
                "viscoelastic (Kelvin-Voigt, viscous form B)" :
                "elastic (no viscous form)")
          << ", " << (system->matrices().lumped_mass() ? "lumped" : "consistent")
-         << " mass\n   time: ";
+         << " mass\n   solver: active set, CG with "
+         << (integrator->uses_amg() ? "AMG" : "Jacobi");
+    if (const double bound = integrator->condition_bound();
+        std::isfinite(bound))
+      text << " (condition number of S scaled by its diagonal at most "
+           << std::setprecision(3) << bound << std::setprecision(6) << ")";
+    text << "\n   time: ";
     if (scheme.is_static)
       text << "static problem (one solve)";
     else if (control.is_adaptive())
@@ -85,6 +91,8 @@ namespace dyncontact
     input.repeated_steps      = step_size_control->repeated_steps;
     input.step_matrices =
       n_step_matrices + integrator->get_operators().n_step_matrices_built;
+    input.uses_amg        = integrator->uses_amg();
+    input.condition_bound = integrator->condition_bound();
     const std::string text =
       summary_text(postprocessors->get_statistics(), input);
     const std::string file = parameters.output_directory + "/summary.txt";

@@ -157,6 +157,13 @@ namespace dyncontact
     out << "iterations: active-set " << total("active_set_iterations")
         << ", projection " << total("projection_iterations") << ", CG "
         << total("linear_iterations") << "\n";
+    out << "preconditioner: " << (input.uses_amg ? "AMG" : "Jacobi");
+    if (std::isfinite(input.condition_bound))
+      out << " (condition number of S scaled by its diagonal at most "
+          << std::setprecision(3) << input.condition_bound
+          << std::setprecision(6) << ")";
+    out << (input.adaptive_time_steps ? " for the last step matrix" : "")
+        << "\n";
 
     out << std::setprecision(3) << "wall time: " << input.wall_time
         << " s, of which the time loop " << input.loop_wall_time << " s\n";

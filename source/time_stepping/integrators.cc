@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace dyncontact
@@ -83,7 +84,6 @@ namespace dyncontact
                                   tau * tau / 4.,
                                   system.viscous() ? tau / 2. : 0.,
                                   1.);
-        solver.set_matrix(S);
         // how far the stiffness and viscosity outweigh the mass in S
         double ratio = 1.;
         for (const auto i : locally_owned)
@@ -95,6 +95,13 @@ namespace dyncontact
               ratio = std::max(ratio, S.diag_element(i) / M_ii);
           }
         step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
+        // (the bound of S's Jacobi-scaled condition number needs a lumped
+        // mass)
+        solver.set_matrix(S,
+                          nullptr,
+                          system.lumped_mass() ?
+                            step_matrix->inertia_ratio :
+                            std::numeric_limits<double>::infinity());
       }
     return step_matrix;
   }

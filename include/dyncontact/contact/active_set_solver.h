@@ -11,6 +11,7 @@
 #include <dyncontact/contact/contact_rows.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -94,8 +95,8 @@ namespace dyncontact
    * eliminates one slave component through an AffineConstraints line merged
    * with the hanging-node and Dirichlet constraints; the condensed SPD
    * problem T^T H T x = T^T (r - H k) is solved by CG, preconditioned by AMG
-   * (or Jacobi for a diagonal H) built once from H itself, so that nothing is
-   * assembled again when the active set changes.
+   * or Jacobi built once from H itself, so that nothing is assembled again
+   * when the active set changes.
    *
    * The solver knows nothing about time: the time integrators use one
    * instance with H = S for the displacement step and one with H = M for the
@@ -119,6 +120,22 @@ namespace dyncontact
       /// AMG's prolongator: the tentative (unsmoothed) aggregation, or
       /// smoothed aggregation (ML's damping factor 4/3).
       bool amg_smoothed_prolongator = false;
+
+      /// CG's preconditioner for a matrix H that is not diagonal.
+      enum class Preconditioner
+      {
+        /// Jacobi where the condition number of H scaled by its diagonal
+        /// is at most jacobi_condition_bound for certain, AMG otherwise
+        automatic,
+        amg,
+        jacobi
+      };
+      Preconditioner preconditioner = Preconditioner::automatic;
+      /// The bound of the condition number of diag(H)^{-1} H up to which
+      /// 'automatic' takes Jacobi: CG on H then needs at most about
+      /// sqrt(100)/2 ln(2 sqrt(100)/1e-12) = 150 iterations for a relative
+      /// residual of 1e-12, on any mesh.
+      static constexpr double jacobi_condition_bound = 100.;
 
       /// Declares subsection "Contact solver".
       static void
@@ -185,11 +202,38 @@ namespace dyncontact
            const ContactRows               &rows);
 
     /**
-     * Sets H and builds its AMG once (of @p preconditioner_matrix if given).
+     * Sets H and CG's preconditioner for it, built once: Jacobi (H's
+     * diagonal), or AMG (of @p preconditioner_matrix if given), as
+     * 'Contact solver/Preconditioner' says.
+     *
+     * For 'automatic', @p lumped_mass_ratio is max_i H_ii / M_ii where
+     * H = M + K with M a lumped (diagonal) mass and K positive
+     * semidefinite; infinite if H is not of that form. With D = diag(H),
+     * x^T H x >= x^T M x >= x^T D x / lumped_mass_ratio, and by Gershgorin
+     * the largest eigenvalue of D^{-1} H is at most max_i sum_j |H_ij| / H_ii:
+     * their product bounds the condition number of D^{-1} H, and Jacobi is
+     * taken when that bound is at most Parameters::jacobi_condition_bound.
      */
     void
-    set_matrix(const MatrixType &H,
-               const MatrixType *preconditioner_matrix = nullptr);
+    set_matrix(
+      const MatrixType &H,
+      const MatrixType *preconditioner_matrix = nullptr,
+      const double lumped_mass_ratio = std::numeric_limits<double>::infinity());
+
+    /// Whether CG is preconditioned by AMG (else by Jacobi).
+    bool
+    uses_amg() const
+    {
+      return amg != nullptr;
+    }
+
+    /// The bound of the condition number of diag(H)^{-1} H that
+    /// 'automatic' decided by (infinite if it was not computed).
+    double
+    get_condition_bound() const
+    {
+      return condition_bound;
+    }
 
     /**
      * Sets H = diag(@p diagonal), a lumped mass (copied);
@@ -270,7 +314,7 @@ namespace dyncontact
     bool              pointwise = false;
     /// Diagonal of H (owned entries) and its value at each row's
     /// eliminated DoF (the scaling c of the active-set criterion); the
-    /// inverse of the diagonal for Jacobi (diagonal H only).
+    /// inverse of the diagonal for Jacobi.
     VectorType          diagonal;
     VectorType          inverse_diagonal;
     std::vector<double> row_scaling;
@@ -279,6 +323,17 @@ namespace dyncontact
     /// the diagonal: row scaling and whether the solve is pointwise.
     void
     set_diagonal_data(const bool is_diagonal);
+
+    /// Jacobi's inverse of the diagonal.
+    void
+    set_inverse_diagonal();
+
+    /// max_i sum_j |H_ij| / H_ii over all rows (collective).
+    double
+    gershgorin_bound(const MatrixType &H) const;
+
+    /// set_matrix()'s bound of the condition number of diag(H)^{-1} H.
+    double condition_bound = std::numeric_limits<double>::infinity();
 
     /// y = H x.
     void

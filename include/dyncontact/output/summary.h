@@ -27,6 +27,12 @@ namespace dyncontact
     unsigned int located_events      = 0;
     unsigned int repeated_steps      = 0;
     unsigned int step_matrices       = 0;
+    /// CG's preconditioner for the last step matrix (static: for A): AMG,
+    /// else Jacobi, and for Jacobi the bound of the condition number of S
+    /// scaled by its diagonal that 'automatic' decided by (infinite if the
+    /// choice was not automatic).
+    bool   uses_amg        = true;
+    double condition_bound = 0.;
   };
 
   /**

@@ -135,6 +135,23 @@ namespace dyncontact
       return current->inertia_ratio;
     }
 
+    /// Whether CG is preconditioned by AMG for the current step matrix
+    /// (else by Jacobi).
+    bool
+    uses_amg() const
+    {
+      return current->solver->uses_amg();
+    }
+
+    /// The bound of the condition number of the current S scaled by its
+    /// diagonal that 'Contact solver/Preconditioner = automatic' decided by
+    /// (infinite if not computed).
+    double
+    condition_bound() const
+    {
+      return current->solver->get_condition_bound();
+    }
+
     /// The warm-start active sets (displacement step, projection).
     std::vector<char> displacement_active;
     std::vector<char> projection_active;
@@ -315,6 +332,21 @@ namespace dyncontact
     inertia_ratio() const
     {
       return operators.inertia_ratio();
+    }
+
+    /// Whether CG is preconditioned by AMG for the current step (else by
+    /// Jacobi).
+    bool
+    uses_amg() const
+    {
+      return operators.uses_amg();
+    }
+
+    /// StepOperators::condition_bound().
+    double
+    condition_bound() const
+    {
+      return operators.condition_bound();
     }
 
     /// Steps with @p tau from now on (StepOperators::set_time_step()).
