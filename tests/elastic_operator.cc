@@ -4,10 +4,13 @@
 // the right-hand side and the energies are computed without a matrix, and
 // Theorem 3.2 needs both to be the same form on the constrained space (the
 // states of a run satisfy the constraints). Two bars of different
-// viscoelastic materials in 2D and 3D, FE_Q(1) and FE_Q(2), with hanging
-// nodes (one corner of the mesh refined once more); random vectors. Also
-// the lumped mass, which the assembly adds on the diagonal in the cell loop,
-// once per row.
+// viscoelastic materials in 2D and 3D, FE_Q(1) and FE_Q(2), and in 2D also
+// FE_Q(3), with hanging nodes (one corner of the mesh refined once more); random vectors.
+// Also the lumped mass, which the assembly adds on the diagonal in the cell
+// loop, once per row. (The sparsity pattern comes from the scalar element's
+// where the vector DoFs are the scalar ones expanded, as for degrees 1 and
+// 2, and from the vector element's otherwise, as for degree 3: an entry
+// missing from either would stop the assembly.)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -131,6 +134,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check<2>(1);
   check<2>(2);
+  check<2>(3);
   check<3>(1);
   check<3>(2);
 }

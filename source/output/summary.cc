@@ -167,8 +167,11 @@ namespace dyncontact
 
     out << std::setprecision(3) << "wall time: " << input.wall_time
         << " s, of which the time loop " << input.loop_wall_time << " s\n";
+    std::size_t width = 0;
+    for (const auto &section : input.section_wall_times)
+      width = std::max(width, section.first.size());
     for (const auto &[section, wall] : input.section_wall_times)
-      out << "  " << std::left << std::setw(27) << section << std::right
+      out << "  " << std::left << std::setw(width) << section << std::right
           << std::setw(10) << wall << " s " << std::setw(8)
           << input.section_calls.at(section) << " calls  " << std::setw(5)
           << std::fixed << std::setprecision(1)

@@ -85,15 +85,14 @@ namespace dyncontact
                                   system.viscous() ? tau / 2. : 0.,
                                   1.);
         // how far the stiffness and viscosity outweigh the mass in S
-        double ratio = 1.;
-        for (const auto i : locally_owned)
-          {
-            const double M_ii = system.lumped_mass() ?
-                                  (*system.M_lumped)(i) :
-                                  system.M->diag_element(i);
-            if (M_ii > 0.)
-              ratio = std::max(ratio, S.diag_element(i) / M_ii);
-          }
+        const VectorType S_diagonal = matrix_diagonal(S);
+        const VectorType M_diagonal =
+          system.lumped_mass() ? *system.M_lumped : matrix_diagonal(*system.M);
+        const double *S_ii = S_diagonal.begin(), *M_ii = M_diagonal.begin();
+        double        ratio = 1.;
+        for (unsigned int k = 0; k < S_diagonal.locally_owned_size(); ++k)
+          if (M_ii[k] > 0.)
+            ratio = std::max(ratio, S_ii[k] / M_ii[k]);
         step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
         // (the bound of S's Jacobi-scaled condition number needs a lumped
         // mass)

@@ -27,6 +27,13 @@ namespace dyncontact
   using VectorType = TrilinosWrappers::MPI::Vector;
   using MatrixType = TrilinosWrappers::SparseMatrix;
 
+  /// The diagonal of @p matrix as a vector of its row partitioning (one
+  /// pass over Epetra's rows).
+  VectorType
+  matrix_diagonal(const MatrixType &matrix);
+
+
+
   /**
    * The contact rows as an operator on distributed vectors: (C v)_p and
    * (C v - g)_p for the rows of this rank (those of its locally owned slave

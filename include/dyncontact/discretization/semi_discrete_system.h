@@ -10,7 +10,6 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <dyncontact/discretization/elastic_operator.h>
@@ -21,6 +20,8 @@
 #include <memory>
 #include <utility>
 #include <vector>
+
+class Epetra_CrsGraph;
 
 namespace dealii
 {
@@ -143,6 +144,7 @@ namespace dyncontact
     SemiDiscreteSystem(const Parameters   &parameters,
                        const Mapping<dim> &mapping,
                        const MPI_Comm      comm);
+    ~SemiDiscreteSystem();
 
     /// DoFs, constraints, sparsity patterns and vectors on the current mesh
     /// (the first call attaches the DoF handlers to @p triangulation).
@@ -337,8 +339,21 @@ namespace dyncontact
     std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
       owned_system0_to_scalar;
 
-    /// of the unconstrained operator, shared by the matrices built on it
-    TrilinosWrappers::SparsityPattern sparsity;
+    /// The sparsity pattern of the unconstrained operator (locally owned
+    /// rows, columns of the locally relevant DoFs), shared by the matrices
+    /// built on it.
+    std::unique_ptr<Epetra_CrsGraph> graph;
+    /// Makes the graph (in setup()).
+    void
+    make_sparsity_graph();
+    /// Whether every vector DoF is dim * (its node's scalar DoF) +
+    /// component, on every cell this rank sees and in the owned and
+    /// relevant sets (collective).
+    bool
+    vector_dofs_expand_scalar_dofs() const;
+    /// A zero matrix on the graph.
+    void
+    reinit_matrix(MatrixType &matrix) const;
     /// the moduli of each material id of the mesh
     std::map<types::material_id, Material> materials;
     /// the consistent mass matrix, or (lumped) its diagonal
