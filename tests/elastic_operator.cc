@@ -5,11 +5,11 @@
 // Theorem 3.2 needs both to be the same form on the constrained space (the
 // states of a run satisfy the constraints). Two bars of different
 // viscoelastic materials in 2D and 3D, FE_Q(1) and FE_Q(2), and in 2D also
-// FE_Q(3), with hanging nodes (one corner of the mesh refined once more); random vectors.
-// Also the lumped mass, which the assembly adds on the diagonal in the cell
-// loop, once per row. (The sparsity pattern comes from the scalar element's
-// where the vector DoFs are the scalar ones expanded, as for degrees 1 and
-// 2, and from the vector element's otherwise, as for degree 3: an entry
+// FE_Q(3), with hanging nodes (one corner of the mesh refined once more);
+// random vectors. Also the lumped mass, which the assembly adds on the diagonal
+// in the cell loop, once per row. (The sparsity pattern comes from the scalar
+// element's where the vector DoFs are the scalar ones expanded, as for degrees
+// 1 and 2, and from the vector element's otherwise, as for degree 3: an entry
 // missing from either would stop the assembly.)
 
 #include <deal.II/base/mpi.h>
