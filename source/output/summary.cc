@@ -173,8 +173,8 @@ namespace dyncontact
     for (const auto &[section, wall] : input.section_wall_times)
       out << "  " << std::left << std::setw(width) << section << std::right
           << std::setw(10) << wall << " s " << std::setw(8)
-          << input.section_calls.at(section) << " calls  " << std::setw(5)
-          << std::fixed << std::setprecision(1)
+          << static_cast<unsigned long>(input.section_calls.at(section))
+          << " calls  " << std::setw(5) << std::fixed << std::setprecision(1)
           << 100. * wall / std::max(input.wall_time, 1e-300) << "%\n"
           << std::defaultfloat << std::setprecision(3);
     return out.str();

@@ -21,9 +21,11 @@ namespace dyncontact
    * Stops with a message before a mesh is built that would not fit into
    * memory: @p n_cells active cells (summed over ranks) of dimension @p dim
    * with elements of degree @p degree, of which @p n_coarse_cells are coarse
-   * cells (every rank stores the whole coarse mesh). The estimate uses
-   * about 4 kB per degree of freedom (matrices, vectors, contact rows and
-   * mesh, as measured in 3D) and 2 kB per coarse cell and rank; the message
+   * cells (every rank stores the whole coarse mesh). The estimate is a
+   * lower bound: per degree of freedom 12 bytes for each of the step
+   * matrix's dim (p+2)^dim entries of a row on average, and 500 bytes of
+   * vectors, DoF and mesh data (1.47 kB in 3D for degree 1, where 1.78 kB
+   * were measured at 1e6 DoFs), and 2 kB per coarse cell and rank; the message
    * names the estimate, the available memory and @p remedy (the parameters
    * to reduce). Collective.
    */
