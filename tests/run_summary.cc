@@ -5,7 +5,8 @@
 // are held against the exact solution (contact from t = 0.1 s to 2.1 s at
 // rho c v0 = 1 Pa, E = 0.05 J/m). Progress lines: one per step with an
 // interval of 1e-9 s, none with 0 and none for this short run with the
-// default interval.
+// default interval. A static problem's summary has no time and no critical
+// set, and its figures come from its one solve.
 
 #include <algorithm>
 #include <cmath>
@@ -173,6 +174,41 @@ main(int argc, char **argv)
   log() << "timer sections listed: "
         << check(summary.find("time step") != std::string::npos &&
                  summary.find("assembly") != std::string::npos)
+        << "\n";
+
+  // a static problem (prm/hertz_static.prm on a coarser mesh): no time, no
+  // critical set; the active set, contact force and pressure of its solve
+  std::ofstream("static.prm")
+    << "include " DYNCONTACT_PRM_DIR "/hertz_static.prm\n"
+    << "set Output directory = static\n"
+    << "subsection Mesh\n  set Initial global refinements = 1\nend\n"
+    << "subsection Output\n  set Write vtu = false\nend\n";
+  const auto        solve          = testing::run_program("static.prm");
+  const std::string static_summary = read("static/summary.txt");
+  const auto        st    = testing::read_statistics("static/statistics.tsv");
+  const auto        nodes = numbers_of(static_summary, "active nodes:");
+  const auto        static_force = numbers_of(static_summary, "contact force:");
+  const auto        static_pressure =
+    numbers_of(static_summary, "peak contact pressure:");
+  log() << "static problem: exit status 0: " << check(solve.status == 0)
+        << ", no time and no critical set in the summary: "
+        << check(static_summary.find("static problem: one constrained "
+                                     "solve") != std::string::npos &&
+                 static_summary.find("\ntime:") == std::string::npos &&
+                 static_summary.find(" at t = ") == std::string::npos &&
+                 static_summary.find("Gamma*") == std::string::npos)
+        << ", active nodes and measure, contact force and pressure as in "
+           "statistics.tsv: "
+        << check(nodes.size() >= 2 && static_force.size() >= 1 &&
+                 static_pressure.size() >= 1 &&
+                 nodes[0] == st.column("active_nodes").back() &&
+                 close(nodes[1], st.column("active_measure").back()) &&
+                 close(static_force[0], st.column("contact_force").back()) &&
+                 close(static_pressure[0],
+                       st.column("max_contact_pressure").back()))
+        << ", the force the load on the half model (0.0025 N/m): "
+        << check(static_force.size() >= 1 &&
+                 close(static_force[0], 0.0025, 1e-6))
         << "\n";
 
   // progress lines

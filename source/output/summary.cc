@@ -46,8 +46,11 @@ namespace dyncontact
     const std::string  force  = input.dim == 2 ? "N/m" : "N";
     const std::string  energy = input.dim == 2 ? "J/m" : "J";
     const unsigned int last   = s.rows.size() - 1;
-    out << "steps: " << step[last] << "\n"
-        << "time: " << time[0] << " to " << time[last] << " s\n";
+    if (input.is_static)
+      out << "static problem: one constrained solve (no time)\n";
+    else
+      out << "steps: " << step[last] << "\n"
+          << "time: " << time[0] << " to " << time[last] << " s\n";
     if (input.adaptive_time_steps && s.has_column("time_step") && last > 0)
       {
         const auto tau = s.column("time_step");
@@ -60,7 +63,20 @@ namespace dyncontact
             << " step matrices S built\n";
       }
 
-    if (s.has_column("active_nodes"))
+    if (s.has_column("active_nodes") && input.is_static)
+      {
+        const std::string measure = input.dim == 2 ? "m" : "m^2";
+        out << "active nodes: " << s.column("active_nodes")[last]
+            << ", measure " << s.column("active_measure")[last] << " "
+            << measure << "\n"
+            << "contact force: " << s.column("contact_force")[last] << " "
+            << force << "\n"
+            << "peak contact pressure: "
+            << s.column("max_contact_pressure")[last] << " Pa\n"
+            << "largest penetration: " << s.column("max_penetration")[last]
+            << " m\n";
+      }
+    else if (s.has_column("active_nodes"))
       {
         // an interval runs from the first to the last step of a run of
         // steps with active rows
@@ -133,7 +149,7 @@ namespace dyncontact
             << "\n";
       }
 
-    if (s.has_column("critical_measure_sum"))
+    if (s.has_column("critical_measure_sum") && !input.is_static)
       out << "sum of meas Gamma*: " << s.column("critical_measure_sum")[last]
           << " (eq. 40, summed over the steps)\n";
 
