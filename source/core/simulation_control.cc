@@ -85,8 +85,11 @@ namespace dyncontact
     prm.declare_entry("Output interval",
                       "0.05",
                       Patterns::Double(),
-                      "Time between two VTU outputs, in s (>= 0; 0 writes "
-                      "every step). statistics.tsv gets every step.");
+                      "Time between two output times, in s (>= 0; 0: every "
+                      "step): VTU files are written then (if Write vtu), and "
+                      "the energy-norm error is integrated then (with "
+                      "Postprocess/Error norm interval = output times). "
+                      "statistics.tsv gets every step.");
     prm.leave_subsection();
 
     prm.enter_subsection("Checkpointing");

@@ -645,9 +645,12 @@ namespace dyncontact
             report.projection_solve.linear_iterations);
         if (may_grow)
           control.grow();
-        if (vtu_writer->is_enabled() && control.output_due())
+        // an output time passes whether or not VTU files are written: the
+        // sampled postprocessors (the error norm) wait for the next one
+        if (control.output_due())
           {
-            vtu_writer->write(control.get_time());
+            if (vtu_writer->is_enabled())
+              vtu_writer->write(control.get_time());
             control.output_written();
           }
         if (mesh_adaptor->refinement_due(control.get_step()) &&

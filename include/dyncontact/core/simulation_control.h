@@ -80,7 +80,9 @@ namespace dyncontact
     void
     advance();
 
-    /// Whether VTU output is due after this step.
+    /// Whether an output time has been reached after this step: VTU files
+    /// are written then (if they are written at all), and the sampled
+    /// postprocessors (the error norm) are evaluated.
     bool
     output_due() const;
 
