@@ -6,6 +6,10 @@
 // with VTU files and without, and equal there to the norm of a run that
 // integrates it every step. (With Write vtu = false, the next output time
 // used to stay at the first one, and the norm ran every step from then on.)
+// The timer section "sampled norms" of summary.txt must count the
+// evaluations (it counted every step), and a static solve of a scene whose
+// exact solution is the dynamics' has no error column (it compared the
+// static state with the dynamics at End time).
 
 #include "tests.h"
 
@@ -15,6 +19,21 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace testing;
 
+  // the calls of the timer section "sampled norms" in summary.txt
+  const auto norm_calls = []() {
+    std::ifstream in("output-N-CS++-40/summary.txt");
+    for (std::string line; std::getline(in, line);)
+      if (line.find("sampled norms") != std::string::npos)
+        {
+          std::istringstream s(line.substr(line.find("norms") + 5));
+          double             seconds;
+          std::string        unit;
+          unsigned int       calls = 0;
+          s >> seconds >> unit >> calls;
+          return calls;
+        }
+    return 0u;
+  };
   const double tau   = 0.0125;
   auto         solve = [&](const std::string &interval, const bool vtu) {
     return run(bar_prm(2,
@@ -36,14 +55,15 @@ main(int argc, char **argv)
         << check(std::none_of(every.begin(),
                               every.end(),
                               [](const double e) { return std::isnan(e); }))
-        << "\n";
+        << "; sampled norms: " << norm_calls() << " calls\n";
   for (const bool vtu : {false, true})
     {
       const auto sampled =
         solve("output times", vtu).column("error_energy_norm");
-      bool         right_steps = sampled.size() == every.size();
-      double       difference  = 0.;
-      unsigned int n_sampled   = 0;
+      const unsigned int calls       = norm_calls();
+      bool               right_steps = sampled.size() == every.size();
+      double             difference  = 0.;
+      unsigned int       n_sampled   = 0;
       for (unsigned int i = 0; right_steps && i < sampled.size(); ++i)
         {
           const bool due = (i % 4 == 0);
@@ -60,6 +80,20 @@ main(int argc, char **argv)
             << ": the norm in " << n_sampled
             << " rows, exactly at steps 0, 4, ..., 40: " << check(right_steps)
             << "; equal to the every-step norm (1e-12): "
-            << check(right_steps && difference <= 1e-12) << "\n";
+            << check(right_steps && difference <= 1e-12)
+            << "; sampled norms: " << calls << " calls\n";
     }
+  const Statistics statics =
+    run(bar_prm(2,
+                "static",
+                40,
+                tau,
+                0.5,
+                "subsection Postprocess\n"
+                "  set Error norm interval = every step\nend\n"));
+  log() << "static solve: no error_energy_norm column: "
+        << check(std::find(statics.columns.begin(),
+                           statics.columns.end(),
+                           "error_energy_norm") == statics.columns.end())
+        << "\n";
 }

@@ -11,7 +11,6 @@
 #include <dyncontact/scenes/interface.h>
 
 #include <cmath>
-#include <limits>
 
 namespace dyncontact
 {
@@ -46,10 +45,13 @@ namespace dyncontact
         prm.leave_subsection();
       }
 
+      /// (not for a static problem: the exact solutions are those of the
+      /// dynamics, at a time a static solve does not have)
       bool
       applies() const override
       {
-        return this->get_scene().has_exact_solution();
+        return this->get_scene().has_exact_solution() &&
+               !this->get_control().is_static_problem();
       }
 
       std::vector<std::string>
@@ -64,16 +66,24 @@ namespace dyncontact
         return !every_step;
       }
 
+      /// At the output times, the first and the last step.
+      bool
+      due() const override
+      {
+        const SimulationControl &control = this->get_control();
+        return every_step || control.get_step() == 0 || control.output_due() ||
+               !control.keep_going();
+      }
+
+      bool
+      is_norm() const override
+      {
+        return true;
+      }
+
       void
       execute(std::vector<double> &row) override
       {
-        const SimulationControl &control = this->get_control();
-        if (!every_step && control.get_step() > 0 && !control.output_due() &&
-            control.keep_going())
-          {
-            row.push_back(std::numeric_limits<double>::quiet_NaN());
-            return;
-          }
         const SemiDiscreteSystem<dim> &system = this->get_system();
         const Scene<dim>              &scene  = this->get_scene();
         const double                   time   = this->get_control().get_time();

@@ -5,6 +5,7 @@
 #include <dyncontact/postprocess/interface.h>
 
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -83,19 +84,26 @@ namespace dyncontact
     {
       std::vector<double> row = {double(this->get_control().get_step()),
                                  this->get_control().get_time()};
-      // the sampled statistics (error norms) first, timed apart; the
-      // columns keep their order
+      // the error norms first, each evaluation timed apart; a sampled
+      // statistic that is not due gets nan; the columns keep their order
       std::vector<std::vector<double>> values(postprocessors.size());
-      {
-        TimerOutput::Scope t(timer, "sampled norms");
-        for (unsigned int k = 0; k < postprocessors.size(); ++k)
-          if (postprocessors[k]->sampled())
+      const auto                       skipped = [&](const unsigned int k) {
+        if (!postprocessors[k]->sampled() || postprocessors[k]->due())
+          return false;
+        values[k].assign(postprocessors[k]->columns().size(),
+                         std::numeric_limits<double>::quiet_NaN());
+        return true;
+      };
+      for (unsigned int k = 0; k < postprocessors.size(); ++k)
+        if (postprocessors[k]->is_norm() && !skipped(k))
+          {
+            TimerOutput::Scope t(timer, "sampled norms");
             postprocessors[k]->execute(values[k]);
-      }
+          }
       {
         TimerOutput::Scope t(timer, "diagnostics");
         for (unsigned int k = 0; k < postprocessors.size(); ++k)
-          if (!postprocessors[k]->sampled())
+          if (!postprocessors[k]->is_norm() && !skipped(k))
             postprocessors[k]->execute(values[k]);
       }
       for (const auto &v : values)

@@ -31,6 +31,20 @@ namespace dyncontact
         return true;
       }
 
+      /// At the reference times.
+      bool
+      due() const override
+      {
+        return this->get_reference_states().at_reference_time(
+          this->get_control().get_time());
+      }
+
+      bool
+      is_norm() const override
+      {
+        return true;
+      }
+
       void
       execute(std::vector<double> &row) override
       {

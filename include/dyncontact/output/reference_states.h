@@ -47,6 +47,14 @@ namespace dyncontact
     void
     write(const double time) const;
 
+    /// Whether this run compares with reference states and @p time is a
+    /// reference time.
+    bool
+    at_reference_time(const double time) const
+    {
+      return compare_states && reference_index(time) >= 0;
+    }
+
     /// The error against the reference state at @p time, NaN if @p time is
     /// no reference time.
     double

@@ -60,6 +60,23 @@ namespace dyncontact
         return false;
       }
 
+      /// Whether its columns are computed after this step; if not, they
+      /// get nan (asked only of sampled statistics).
+      virtual bool
+      due() const
+      {
+        return true;
+      }
+
+      /// Whether it is an error norm: each evaluation is timed as a call of
+      /// the section "sampled norms", the other statistics in
+      /// "diagnostics".
+      virtual bool
+      is_norm() const
+      {
+        return false;
+      }
+
       /// Appends one value per column for the current step to @p row.
       virtual void
       execute(std::vector<double> &row) = 0;
@@ -101,9 +118,10 @@ namespace dyncontact
       void
       open_file(const std::string &file);
 
-      /// One row for the current step: step, time, every postprocessor;
-      /// the sampled statistics (error norms) are computed first and timed
-      /// in the section "sampled norms", the others in "diagnostics".
+      /// One row for the current step: step, time, every postprocessor (a
+      /// sampled one only if it is due, nan otherwise); the error norms are
+      /// computed first, each evaluation timed as a call of the section
+      /// "sampled norms", the others in "diagnostics".
       void
       execute(TimerOutput &timer);
 
