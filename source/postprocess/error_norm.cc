@@ -66,13 +66,12 @@ namespace dyncontact
         return !every_step;
       }
 
-      /// At the output times, the first and the last step.
+      /// At the output times (the last step is one), and the first step.
       bool
       due() const override
       {
-        const SimulationControl &control = this->get_control();
-        return every_step || control.get_step() == 0 || control.output_due() ||
-               !control.keep_going();
+        return every_step || this->get_control().get_step() == 0 ||
+               this->get_control().output_due();
       }
 
       bool
