@@ -92,8 +92,8 @@ one_step(const std::string                      &scheme,
                             MPI_COMM_WORLD);
   VectorType     u = make_vector(u0), udot = make_vector(v0);
   Outcome        outcome;
-  outcome.report =
-    initialize ? integrator.initialize(u, udot) : integrator.step(u, udot);
+  outcome.report = initialize ? integrator.initialize(tau, u, udot) :
+                                integrator.step(tau, true, u, udot);
   for (unsigned int i = 0; i < n; ++i)
     {
       outcome.u.push_back(u(i));

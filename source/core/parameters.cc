@@ -13,6 +13,7 @@
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -165,6 +166,7 @@ namespace dyncontact
     GlobalParameters::declare_parameters(prm);
     SemiDiscreteSystem<dim>::Parameters::declare_parameters(prm);
     SimulationControl::declare_parameters(prm);
+    TimeStepController::declare_parameters(prm);
     TimeIntegrator::declare_parameters(prm);
     Material::declare_parameters(prm, "Material");
     Material::declare_parameters(prm, "Material of body 2");

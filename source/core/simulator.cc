@@ -4,6 +4,7 @@
 #include <deal.II/distributed/p4est_wrappers.h>
 
 #include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/input_checks.h>
 #include <dyncontact/core/memory_check.h>
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -14,8 +15,6 @@
 #include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
-#include <dyncontact/time_stepping/row_force.h>
-#include <dyncontact/time_stepping/step_size_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,33 +25,22 @@
 
 namespace dyncontact
 {
-  namespace
-  {
-    /// @p x with six significant digits.
-    std::string
-    number(const double x)
-    {
-      std::ostringstream s;
-      s << std::setprecision(6) << x;
-      return s.str();
-    }
-  } // namespace
-
-
-
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &input_directory,
                             const MPI_Comm     comm)
     : comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , control(comm)
+    , control(comm, time_step_controller)
     , scheme(TimeIntegrator::parse_scheme(prm))
     , triangulation(comm)
   {
     parameters.parse_parameters(prm);
     parameters.input_directory = input_directory;
     control.parse_parameters(prm, scheme.is_static);
+    time_step_controller.parse_parameters(prm,
+                                          scheme.is_static,
+                                          control.get_end_time());
     solver_parameters.parse_parameters(prm);
     typename SemiDiscreteSystem<dim>::Parameters system_parameters;
     system_parameters.parse_parameters(prm);
@@ -69,8 +57,7 @@ namespace dyncontact
     reference_states = std::make_unique<ReferenceStates<dim>>();
     reference_states->parse_parameters(prm);
     checkpoints.parse_parameters(prm, parameters.output_directory, comm);
-    step_size_control = std::make_unique<StepSizeControl>();
-    postprocessors    = std::make_unique<Postprocess::Manager<dim>>();
+    postprocessors = std::make_unique<Postprocess::Manager<dim>>();
     postprocessors->parse_parameters(prm);
     Progress::Parameters progress_parameters;
     progress_parameters.parse_parameters(prm);
@@ -199,7 +186,7 @@ namespace dyncontact
       near_null_space.rotations = system->rotation_modes();
     integrator =
       std::make_unique<TimeIntegrator>(scheme,
-                                       control.get_timestep(),
+                                       time_step_controller.get_timestep(),
                                        system->matrices(),
                                        solver_parameters,
                                        system->locally_owned_dofs(),
@@ -210,10 +197,6 @@ namespace dyncontact
                                        comm);
     // ML's temporaries
     release_freed_memory();
-    // the estimates refer to the old mesh
-    step_size_control->reset();
-    row_forces.clear();
-    settled_rows.assign(contact->get_rows().size(), 1);
     check_inertia();
   }
 
@@ -262,6 +245,7 @@ namespace dyncontact
         setup_discretization();
       }
     system->interpolate_initial_values(*scene, u, udot);
+    time_step_controller.reset(contact->get_rows().size());
     make_integrator();
 
     // an initially penetrating configuration (allowed only with 'Initial
@@ -279,7 +263,8 @@ namespace dyncontact
       }
     {
       TimerOutput::Scope t(*timer, "time step");
-      report = integrator->initialize(u, udot);
+      report =
+        integrator->initialize(time_step_controller.get_timestep(), u, udot);
     }
     AssertThrow(report.converged(),
                 ExcMessage("The initial velocity of " + scheme.name +
@@ -329,30 +314,24 @@ namespace dyncontact
     setup_discretization();
     VectorType                flags, acceleration;
     std::vector<VectorType *> vectors = {&u, &udot, &flags};
-    if (control.is_adaptive())
+    if (time_step_controller.has_checkpoint_vectors())
       vectors.push_back(&acceleration);
     system->deserialize(vectors);
     control.load(state);
     AssertThrow(control.get_end_time() > control.get_time(),
                 ExcMessage("Time integration/End time = " +
-                           number(control.get_end_time()) +
+                           format_number(control.get_end_time()) +
                            " s is not after the checkpoint's time t = " +
-                           number(control.get_time()) +
+                           format_number(control.get_time()) +
                            " s: a resumed run needs a later End time."));
+    time_step_controller.load(state, contact->get_rows(), flags, acceleration);
     make_integrator();
     integrator->load_active_sets(flags);
-    if (control.is_adaptive())
-      {
-        step_size_control->load(state, acceleration);
-        if (state.count("step_matrices_built"))
-          // those of the run before the checkpoint; make_integrator()
-          // above built one more, which counts
-          n_step_matrices = std::stoul(state.at("step_matrices_built"));
-        const ContactRows &rows = contact->get_rows();
-        for (unsigned int p = 0; p < rows.size(); ++p)
-          settled_rows[p] =
-            (std::lround(flags(rows.rows[p].eliminated_dof())) & 4) == 0;
-      }
+    if (time_step_controller.is_adaptive() &&
+        state.count("step_matrices_built"))
+      // those of the run before the checkpoint; make_integrator() above
+      // built one more, which counts
+      n_step_matrices = std::stoul(state.at("step_matrices_built"));
     vtu_writer->load(state);
     mesh_adaptor->load(state);
     open_outputs();
@@ -376,9 +355,10 @@ namespace dyncontact
                     (postprocessors->is_sampled(c) &&
                      std::isnan(statistics.rows.back()[c])),
                   ExcMessage("step " + std::to_string(control.get_step()) +
-                             " (t = " + number(control.get_time()) +
+                             " (t = " + format_number(control.get_time()) +
                              " s): the statistic '" + statistics.columns[c] +
-                             "' is " + number(statistics.rows.back()[c]) +
+                             "' is " +
+                             format_number(statistics.rows.back()[c]) +
                              ". Check the input for values far outside "
                              "physical ranges (lengths, moduli, densities)."));
     reference_states->write(control.get_time());
@@ -405,6 +385,8 @@ namespace dyncontact
       TimerOutput::Scope t(*timer, "mesh adaptation");
       system->interpolate_after_refinement(u, udot);
     }
+    // the estimates and the rows' states refer to the old mesh
+    time_step_controller.reset(contact->get_rows().size());
     make_integrator();
 
     // the transferred displacement may violate the new K_h: back onto it
@@ -426,35 +408,19 @@ namespace dyncontact
   {
     TimerOutput::Scope t(*timer, "checkpoint");
     const std::string  dir = checkpoints.begin(control.get_step());
-    VectorType         flags(u);
+    std::map<std::string, std::string> state;
+    VectorType                         flags(u), acceleration(u);
     integrator->save_active_sets(flags);
-    if (control.is_adaptive())
-      {
-        // + 4: a row that changed its state in the last step
-        const ContactRows &rows = contact->get_rows();
-        for (unsigned int p = 0; p < rows.size(); ++p)
-          if (!settled_rows[p])
-            flags(rows.rows[p].eliminated_dof()) += 4.;
-        flags.compress(VectorOperation::insert);
-      }
+    time_step_controller.save(state, contact->get_rows(), flags, acceleration);
     std::vector<const VectorType *> vectors = {&u, &udot, &flags};
-    VectorType                      acceleration(u);
-    if (control.is_adaptive())
-      {
-        // the error estimate's last acceleration (zero if it has none)
-        acceleration = 0.;
-        if (step_size_control->get_acceleration().size() == u.size())
-          acceleration = step_size_control->get_acceleration();
-        vectors.push_back(&acceleration);
-      }
+    if (time_step_controller.has_checkpoint_vectors())
+      vectors.push_back(&acceleration);
     system->prepare_for_serialization(vectors);
     triangulation.save(Checkpoints::mesh_file(dir));
-    std::map<std::string, std::string> state;
     control.save(state);
     postprocessors->save(state);
     mesh_adaptor->save(state);
     vtu_writer->save(state);
-    step_size_control->save(state);
     state["step_matrices_built"] = std::to_string(
       n_step_matrices + integrator->get_operators().n_step_matrices_built);
     checkpoints.finish(dir, state);
@@ -471,9 +437,8 @@ namespace dyncontact
     if (control.get_step() == 0 && !checkpoints.resume())
       {
         // nothing to keep: the output directory stays as it was
-        message << std::setprecision(6)
-                << "the first step (tau = " << control.get_timestep()
-                << " s) failed: "
+        message << std::setprecision(6) << "the first step (tau = "
+                << time_step_controller.get_timestep() << " s) failed: "
                 << (finite && !report.converged() ?
                       report.failure() :
                       "the solution is not finite")
@@ -485,7 +450,8 @@ namespace dyncontact
     const std::string dir = write_checkpoint();
     message << std::setprecision(6) << "step " << control.get_step() + 1
             << " (from t = " << control.get_time()
-            << " s, tau = " << control.get_timestep() << " s) failed: "
+            << " s, tau = " << time_step_controller.get_timestep()
+            << " s) failed: "
             << (finite && !report.converged() ? report.failure() :
                                                 "the solution is not finite")
             << ". The last good state (step " << control.get_step()
@@ -499,103 +465,65 @@ namespace dyncontact
 
 
   template <int dim>
-  bool
+  TimeStepController::AcceptedStep
   Simulator<dim>::take_step()
   {
     u_old    = u;
     udot_old = udot;
-    // where the step starts from: its active sets, and the rows' forces
-    const auto start_sets    = integrator->active_sets();
-    bool       event_located = false;
-    auto       back_to_start = [&]() {
-      u    = u_old;
-      udot = udot_old;
-      integrator->warm_start(start_sets.first, start_sets.second);
-    };
+    // where the step starts from: its active sets
+    const auto start_sets = integrator->active_sets();
+    time_step_controller.begin_step(control.get_time(), control.get_end_time());
     while (true)
       {
-        control.clip_to_end_time();
-        integrator->set_time_step(control.get_timestep(),
-                                  !control.step_is_shortened());
-        check_inertia();
+        const double tau = time_step_controller.trial_timestep();
         {
           TimerOutput::Scope t(*timer, "time step");
-          report = integrator->step(u, udot);
+          report = integrator->step(tau,
+                                    !time_step_controller.step_is_shortened(),
+                                    u,
+                                    udot);
         }
+        check_inertia();
         const bool finite =
           std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
         if (!report.converged() || !finite)
           {
-            // back to the last good state; retry with a smaller step, or stop
+            // back to the last good state, warm started from the failed
+            // trial's active sets: retry with a smaller step, or stop
             const auto active = integrator->active_sets();
             u                 = u_old;
             udot              = udot_old;
-            if (!control.reduce_timestep())
+            if (!time_step_controller.retry_after_failure())
               stop_after_failed_step(finite);
             pcout << "   warning: step " << control.get_step() + 1
                   << " (t = " << control.get_time()
                   << " s) failed; retrying with tau = "
-                  << control.get_timestep() << " s" << std::endl;
-            integrator->set_time_step(control.get_timestep(), true);
+                  << time_step_controller.get_timestep() << " s" << std::endl;
             integrator->warm_start(active.first, active.second);
-            event_located = false;
             continue;
           }
-        if (!control.is_adaptive())
-          return false;
-
-        TimerOutput::Scope t(*timer, "time step control");
-        // a contact row that comes into contact or is released inside the
-        // step: end the step at the predicted moment (once per step)
-        if (!event_located && control.get_event_location() !=
-                                SimulationControl::EventLocation::none)
+        if (time_step_controller.is_adaptive())
           {
-            const double theta = StepSizeControl::event_fraction(
-              *integrator,
-              contact->get_row_operator(),
-              start_sets.first,
-              settled_rows,
-              row_forces,
-              u_old,
-              udot_old,
-              u,
-              report,
-              control.get_event_location() ==
-                SimulationControl::EventLocation::every_row,
-              comm);
-            // not below the Minimum time step
-            if (theta < 1. - 1e-2 && theta * control.get_timestep() >=
-                                       control.get_minimum_timestep())
+            TimerOutput::Scope t(*timer, "time step control");
+            if (time_step_controller.judge(integrator->get_operators(),
+                                           contact->get_row_operator(),
+                                           start_sets.first,
+                                           u_old,
+                                           udot_old,
+                                           u,
+                                           udot,
+                                           report,
+                                           comm) ==
+                TimeStepController::Verdict::retry)
               {
-                back_to_start();
-                control.shorten(theta * control.get_timestep());
-                event_located = true;
-                ++step_size_control->located_events;
+                // from the start of the step, with its active sets
+                u    = u_old;
+                udot = udot_old;
+                integrator->warm_start(start_sets.first, start_sets.second);
                 continue;
               }
           }
-        const double eta = step_size_control->estimate(
-          integrator->get_operators(), udot_old, udot, control.get_timestep());
-        // a level step above the tolerance is repeated with tau/2
-        if (eta > control.get_tolerance() && !control.step_is_shortened() &&
-            control.halve())
-          {
-            back_to_start();
-            event_located = false;
-            ++step_size_control->repeated_steps;
-            continue;
-          }
-        report.error_estimate = eta;
-        const bool may_grow   = step_size_control->accept(
-          udot_old, udot, control.get_timestep(), eta, control.get_tolerance());
-        row_forces.resize(report.active.size());
-        for (unsigned int p = 0; p < row_forces.size(); ++p)
-          {
-            row_forces[p]   = row_force(report, *integrator, p);
-            settled_rows[p] = (report.active[p] == start_sets.first[p]);
-          }
-        // grows after the step is recorded (control.advance() first)
-        return may_grow && !control.step_is_shortened();
+        return time_step_controller.accept();
       }
   }
 
@@ -625,8 +553,8 @@ namespace dyncontact
     while (control.keep_going())
       {
         Timer      step_timer;
-        const bool may_grow = take_step();
-        control.advance();
+        const auto step = take_step();
+        control.advance(step.tau, step.tau_changed);
         step_timer.stop();
         step_wall_time = step_timer.wall_time();
         record_statistics();
@@ -636,15 +564,13 @@ namespace dyncontact
           control.get_step(),
           control.get_time(),
           control.get_end_time(),
-          control.get_timestep(),
+          report.tau,
           Utilities::MPI::sum<types::global_dof_index>(
             std::count(report.active.begin(), report.active.end(), 1), comm),
           contact->n_global_rows(),
           report.displacement_solve.iterations,
           report.displacement_solve.linear_iterations +
             report.projection_solve.linear_iterations);
-        if (may_grow)
-          control.grow();
         // an output time passes whether or not VTU files are written: the
         // sampled postprocessors (the error norm) wait for the next one
         if (control.output_due())

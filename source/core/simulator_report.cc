@@ -9,7 +9,6 @@
 #include <dyncontact/output/summary.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
-#include <dyncontact/time_stepping/step_size_control.h>
 
 #include <cmath>
 #include <fstream>
@@ -54,17 +53,18 @@ namespace dyncontact
     text << "\n   time: ";
     if (scheme.is_static)
       text << "static problem (one solve)";
-    else if (control.is_adaptive())
+    else if (time_step_controller.is_adaptive())
       text << "scheme " << scheme.name << ", adaptive tau in ["
-           << control.get_minimum_timestep() << ", "
-           << control.get_maximum_timestep() << "] s, now "
-           << control.get_timestep() << " s, from t = " << control.get_time()
-           << " to " << control.get_end_time() << " s";
+           << time_step_controller.get_minimum_timestep() << ", "
+           << time_step_controller.get_maximum_timestep() << "] s, now "
+           << time_step_controller.get_timestep()
+           << " s, from t = " << control.get_time() << " to "
+           << control.get_end_time() << " s";
     else
-      text << "scheme " << scheme.name << ", tau = " << control.get_timestep()
-           << " s, "
+      text << "scheme " << scheme.name
+           << ", tau = " << time_step_controller.get_timestep() << " s, "
            << std::ceil((control.get_end_time() - control.get_time()) /
-                          control.get_timestep() -
+                          time_step_controller.get_timestep() -
                         1e-9)
            << " steps from t = " << control.get_time() << " to "
            << control.get_end_time() << " s";
@@ -86,9 +86,9 @@ namespace dyncontact
     input.section_wall_times =
       timer->get_summary_data(TimerOutput::total_wall_time);
     input.section_calls       = timer->get_summary_data(TimerOutput::n_calls);
-    input.adaptive_time_steps = control.is_adaptive();
-    input.located_events      = step_size_control->located_events;
-    input.repeated_steps      = step_size_control->repeated_steps;
+    input.adaptive_time_steps = time_step_controller.is_adaptive();
+    input.located_events      = time_step_controller.n_located_events();
+    input.repeated_steps      = time_step_controller.n_repeated_steps();
     input.step_matrices =
       n_step_matrices + integrator->get_operators().n_step_matrices_built;
     input.uses_amg        = integrator->uses_amg();

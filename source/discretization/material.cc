@@ -52,17 +52,6 @@ namespace dyncontact
     prm.leave_subsection();
   }
 
-  namespace
-  {
-    std::string
-    number(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-  } // namespace
-
   void
   Material::parse_parameters(ParameterHandler  &prm,
                              const std::string &subsection)
@@ -82,7 +71,7 @@ namespace dyncontact
                 ExcMessage(subsection +
                            "/Poisson's ratio must lie in the open "
                            "interval (-1, 0.5); got " +
-                           number(poissons_ratio) + "."));
+                           format_number(poissons_ratio) + "."));
     check_in_range(density, 1e-9, 1e6, subsection + "/Density", "kg/m^3");
     check_in_range(viscous_shear_modulus,
                    0.,
@@ -93,12 +82,12 @@ namespace dyncontact
                 ExcMessage(subsection +
                            "/Viscous Lame parameter must lie in [-1e18, "
                            "1e18] (Pa s); got " +
-                           number(viscous_lambda) + "."));
+                           format_number(viscous_lambda) + "."));
     AssertThrow(std::isfinite(viscous_lambda) &&
                   viscous_lambda + 2. * viscous_shear_modulus / 3. >= 0.,
                 ExcMessage(subsection +
                            "/Viscous Lame parameter must be finite "
                            "with lambda_v + 2/3 mu_v >= 0 (Pa s); got " +
-                           number(viscous_lambda) + "."));
+                           format_number(viscous_lambda) + "."));
   }
 } // namespace dyncontact

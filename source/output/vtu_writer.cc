@@ -142,7 +142,7 @@ namespace dyncontact
       gap(scalar_locally_owned, comm);
     for (unsigned int p = 0; p < rows.size(); ++p)
       {
-        const double force = row_force(report, this->get_integrator(), p);
+        const double force           = row_force(report, p);
         pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
         active(row_scalar_dofs[p])   = report.active[p];
         critical(row_scalar_dofs[p]) = report.critical[p];

@@ -50,7 +50,7 @@ namespace dyncontact
             {
               n_active += 1.;
               measure += rows.rows[p].weight;
-              const double f_p = row_force(report, this->get_integrator(), p);
+              const double f_p = row_force(report, p);
               force += f_p;
               max_pressure = std::max(max_pressure, f_p / rows.rows[p].weight);
             }

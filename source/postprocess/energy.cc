@@ -61,7 +61,7 @@ namespace dyncontact
             VectorType du(u), B_du(u);
             du -= this->get_old_solution();
             system.viscous_vmult(B_du, du);
-            dissipation += (B_du * du) / this->get_integrator().time_step();
+            dissipation += (B_du * du) / this->get_step_report().tau;
           }
         const double       total = kinetic + elastic + dissipation;
         const unsigned int step  = this->get_control().get_step();

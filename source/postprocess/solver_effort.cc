@@ -34,7 +34,7 @@ namespace dyncontact
                     double(report.displacement_solve.linear_iterations +
                            report.projection_solve.linear_iterations),
                     this->get_step_wall_time(),
-                    this->get_integrator().time_step(),
+                    report.tau,
                     report.error_estimate});
       }
     };

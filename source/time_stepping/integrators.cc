@@ -418,9 +418,11 @@ namespace dyncontact
 
 
   StepReport
-  TimeIntegrator::empty_report() const
+  TimeIntegrator::empty_report(const double tau) const
   {
-    StepReport        report;
+    StepReport report;
+    report.tau          = tau;
+    report.force_factor = scheme.is_static ? 1. : 2. / (tau * tau);
     const std::size_t n = operators.n_rows();
     report.active.assign(n, 0);
     report.multipliers.assign(n, 0.);
@@ -432,9 +434,10 @@ namespace dyncontact
 
 
   StepReport
-  TimeIntegrator::initialize(VectorType &u, VectorType &udot)
+  TimeIntegrator::initialize(const double tau, VectorType &u, VectorType &udot)
   {
-    StepReport report = empty_report();
+    operators.set_time_step(tau, true);
+    StepReport report = empty_report(tau);
     if (scheme.initialize != nullptr)
       scheme.initialize(operators, u, udot, report);
     return report;
@@ -443,9 +446,13 @@ namespace dyncontact
 
 
   StepReport
-  TimeIntegrator::step(VectorType &u, VectorType &udot)
+  TimeIntegrator::step(const double tau,
+                       const bool   is_level,
+                       VectorType  &u,
+                       VectorType  &udot)
   {
-    StepReport report = empty_report();
+    operators.set_time_step(tau, is_level);
+    StepReport report = empty_report(tau);
     scheme.step(operators, u, udot, report);
     // A u^{n+1}, which the next step's right-hand side needs, now: the
     // energy after this step reads it from the cache (CachedProduct)

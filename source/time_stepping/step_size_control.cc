@@ -11,7 +11,7 @@
 namespace dyncontact
 {
   double
-  StepSizeControl::event_fraction(const TimeIntegrator      &integrator,
+  StepSizeControl::event_fraction(const StepOperators       &operators,
                                   const ContactRowOperator  &row_operator,
                                   const std::vector<char>   &active_before,
                                   const std::vector<char>   &settled,
@@ -27,7 +27,7 @@ namespace dyncontact
     // would be too short to be worth it (and it is where the step after a
     // located event finds its row, at a gap of round-off size)
     const double       smallest = 1e-2;
-    const double       tau      = integrator.time_step();
+    const double       tau      = trial.tau;
     const ContactRows &rows     = row_operator.rows();
     const std::size_t  n        = row_operator.size();
     const bool known = (active_before.size() == n && settled.size() == n);
@@ -61,10 +61,9 @@ namespace dyncontact
     double fraction = 2.;
     if (Utilities::MPI::logical_or(has_event, comm))
       {
-        const auto           before    = row_operator.constraint_values(u_old);
-        const auto           rate      = row_operator.apply(udot_old);
-        const auto           after     = row_operator.constraint_values(u);
-        const StepOperators &operators = integrator.get_operators();
+        const auto before = row_operator.constraint_values(u_old);
+        const auto rate   = row_operator.apply(udot_old);
+        const auto after  = row_operator.constraint_values(u);
         // gaps below round-off of the problem's lengths (a row that a
         // located step left touching) locate nothing: their ratios would
         // be ratios of round-off, different on different numbers of ranks

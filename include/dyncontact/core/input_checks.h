@@ -9,6 +9,15 @@
 
 namespace dyncontact
 {
+  /// @p x as a message prints it: six significant digits.
+  inline std::string
+  format_number(const double x)
+  {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  }
+
   /**
    * Stops with a message naming the parameter @p entry (e.g.
    * "Material/Density"), the range [@p min, @p max] in @p unit and the value

@@ -16,32 +16,29 @@ namespace dyncontact
 {
   using namespace dealii;
 
+  class TimeStepController;
+
   /**
-   * The one owner of time (as lethe's SimulationControl): the time step tau,
-   * the end time, the step number and the time t_n = t_base + k tau (so that
-   * times do not accumulate round-off), the moments of VTU output and of
-   * checkpoints, and the retry policy of a failed step (tau/2, down to
-   * tau/1024, when 'Time step adaptation' is on). The static problem is one
-   * step to the end time.
-   *
-   * With 'Time step control = adaptive' tau moves between the levels
-   * Time step * 2^k inside [Minimum time step, Maximum time step]: halve()
-   * after a rejected step, grow() when the error estimate allows, and
-   * shorten() for one step that ends at a located contact event (or at End
-   * time); the step after it returns to the level. t_n then sums the steps
-   * (t = t_base + k tau since the last change of tau).
+   * The owner of time (as lethe's SimulationControl): the end time, the
+   * step number and the time t_n = t_base + k tau (so that times do not
+   * accumulate round-off; t_base is the time at which tau last changed),
+   * and the moments of VTU output and of checkpoints. The time step tau is
+   * the TimeStepController's: advance() is handed the accepted step's, and
+   * the comparisons of times with End time and output times allow
+   * round-off of 1e-9 of the controller's present tau. The static problem
+   * is one step to the end time.
    */
   class SimulationControl
   {
   public:
-    /// Declares Time integration/Time step, End time, Time step
-    /// adaptation, Time step control, Minimum/Maximum time step, Time step
-    /// tolerance; Output/Output interval; Checkpointing/Interval in steps,
-    /// Interval in minutes.
+    /// Declares Time integration/End time; Output/Output interval;
+    /// Checkpointing/Interval in steps, Interval in minutes.
     static void
     declare_parameters(ParameterHandler &prm);
 
-    SimulationControl(const MPI_Comm comm);
+    /// @p time_step_controller: the owner of tau (must outlive this).
+    SimulationControl(const MPI_Comm            comm,
+                      const TimeStepController &time_step_controller);
 
     /// Reads and checks the parameters; @p is_static: one step, to End time.
     void
@@ -59,13 +56,6 @@ namespace dyncontact
       return time;
     }
 
-    /// The time step in use.
-    double
-    get_timestep() const
-    {
-      return tau;
-    }
-
     double
     get_end_time() const
     {
@@ -76,9 +66,10 @@ namespace dyncontact
     bool
     keep_going() const;
 
-    /// After a successful step: t_{n+1}.
+    /// After an accepted step of length @p tau: t_{n+1}, counted from t_n if
+    /// @p tau_changed since the step before.
     void
-    advance();
+    advance(const double tau, const bool tau_changed);
 
     /// Whether an output time has been reached after this step: VTU files
     /// are written then (if they are written at all), and the sampled
@@ -97,75 +88,6 @@ namespace dyncontact
     void
     checkpoint_written();
 
-    /// A step failed: with 'Time step adaptation', halve tau (down to
-    /// tau/1024) and return true; otherwise return false.
-    bool
-    reduce_timestep();
-
-    /// Whether 'Time step control = adaptive'.
-    bool
-    is_adaptive() const
-    {
-      return adaptive;
-    }
-
-    double
-    get_minimum_timestep() const
-    {
-      return min_time_step;
-    }
-
-    double
-    get_maximum_timestep() const
-    {
-      return max_time_step;
-    }
-
-    /// Which contact events the adaptive control locates.
-    enum class EventLocation
-    {
-      none,
-      onset_and_separation,
-      every_row
-    };
-
-    EventLocation
-    get_event_location() const
-    {
-      return event_location;
-    }
-
-    /// The tolerance of the error estimate (adaptive control).
-    double
-    get_tolerance() const
-    {
-      return tolerance;
-    }
-
-    /// Whether the present step is shortened (event or End time).
-    bool
-    step_is_shortened() const
-    {
-      return tau != tau_level;
-    }
-
-    /// Adaptive control: the next step takes @p new_tau < the level (an
-    /// event located inside the step); the level is kept.
-    void
-    shorten(const double new_tau);
-
-    /// Adaptive control: a step that would pass End time ends there.
-    void
-    clip_to_end_time();
-
-    /// Adaptive control: the level tau/2; false at the Minimum time step.
-    bool
-    halve();
-
-    /// Adaptive control: the level 2 tau; false at the Maximum time step.
-    bool
-    grow();
-
     /// Whether the run is the static problem (one step).
     bool
     is_static_problem() const
@@ -173,36 +95,24 @@ namespace dyncontact
       return is_static;
     }
 
-    /// The state a resumed run needs (step, time, tau, next output).
+    /// The state a resumed run needs (step, time, next output).
     void
     save(std::map<std::string, std::string> &state) const;
     void
     load(const std::map<std::string, std::string> &state);
 
   private:
-    const MPI_Comm comm;
+    const MPI_Comm            comm;
+    const TimeStepController &time_step_controller;
 
     // parameters
-    double        time_step            = 0.0125;
-    double        end_time             = 2.5;
-    bool          time_step_adaptation = false;
-    double        output_interval      = 0.05;
-    unsigned int  checkpoint_steps     = 0;
-    double        checkpoint_minutes   = 0.;
-    bool          is_static            = false;
-    bool          adaptive             = false;
-    double        min_time_step        = 0.;
-    double        max_time_step        = 0.;
-    double        tolerance            = 1e-2;
-    EventLocation event_location       = EventLocation::onset_and_separation;
-
-    /// t = t_base + k tau from here on (after a change of tau)
-    void
-    restart_count();
+    double       end_time           = 2.5;
+    double       output_interval    = 0.05;
+    unsigned int checkpoint_steps   = 0;
+    double       checkpoint_minutes = 0.;
+    bool         is_static          = false;
 
     // state
-    double       tau         = 0.0125;
-    double       tau_level   = 0.0125;
     unsigned int step        = 0;
     double       time        = 0.;
     double       time_base   = 0.;

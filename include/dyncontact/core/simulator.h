@@ -13,6 +13,7 @@
 #include <dyncontact/core/statistics.h>
 #include <dyncontact/output/checkpoint.h>
 #include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <memory>
 #include <string>
@@ -28,7 +29,6 @@ namespace dyncontact
   class VtuWriter;
   class OutputDirectory;
   class Progress;
-  class StepSizeControl;
 
   /**
    * The time loop, and nothing else: it builds the scene's mesh, asks the
@@ -78,11 +78,11 @@ namespace dyncontact
     /// poor relative accuracy.
     void
     check_inertia();
-    /// One step from (u, udot) = (u_old, udot_old), repeated as the time
-    /// step control asks (a failed solve, a located contact event, an error
-    /// estimate above the tolerance); returns once a step is accepted,
-    /// with whether tau may grow after it.
-    bool
+    /// One step from (u, udot) = (u_old, udot_old): trial steps with the
+    /// TimeStepController's tau until it accepts one (it retries after a
+    /// failed solve, a located contact event, an error estimate above the
+    /// tolerance); returns the accepted step's tau.
+    TimeStepController::AcceptedStep
     take_step();
     /// The initial state and its statistics row (a new run).
     void
@@ -119,6 +119,8 @@ namespace dyncontact
     ConditionalOStream           pcout;
     std::unique_ptr<TimerOutput> timer;
 
+    /// tau (declared before the control, which reads it)
+    TimeStepController          time_step_controller;
     SimulationControl           control;
     const Scheme               &scheme;
     ActiveSetSolver::Parameters solver_parameters;
@@ -135,13 +137,6 @@ namespace dyncontact
     double     step_wall_time = 0.;
     bool       outputs_open   = false;
     bool       warned_inertia = false;
-    /// 'Time step control = adaptive': the estimates (and counts of the
-    /// repeated steps), the rows' forces of the last accepted step (for
-    /// release events).
-    std::unique_ptr<StepSizeControl> step_size_control;
-    std::vector<double>              row_forces;
-    /// per row: whether the last accepted step left it in its state
-    std::vector<char> settled_rows;
     /// step matrices S built by the integrators of earlier meshes
     unsigned int n_step_matrices = 0;
 

@@ -20,6 +20,11 @@ namespace dyncontact
   /// What one step reports to the diagnostics and to the step control.
   struct StepReport
   {
+    /// The step's length tau (s; the static problem: Time step).
+    double tau = 0.;
+    /// Factor from a multiplier mu_p to the contact force: 2/tau^2 for the
+    /// dynamic schemes (eq. 13), 1 for the static problem.
+    double                  force_factor = 0.;
     ActiveSetSolver::Result displacement_solve;
     ActiveSetSolver::Result projection_solve;
     /// Active rows and multipliers of the displacement step (12d)/(11c).
@@ -243,9 +248,11 @@ namespace dyncontact
   scheme_by_name(const std::string &name);
 
   /**
-   * A scheme with its operators at one time step tau: the object the time
-   * loop steps with. Rebuilt when the mesh or tau changes (the active sets
-   * carry over through warm_start()).
+   * A scheme with its operators on one mesh: the object the time loop steps
+   * with. It stores no time step: each step is handed its tau (the
+   * TimeStepController's), and the operators keep the step matrices of the
+   * last tau levels. Rebuilt when the mesh changes (the active sets carry
+   * over through warm_start()).
    */
   class TimeIntegrator
   {
@@ -258,6 +265,7 @@ namespace dyncontact
     static const Scheme &
     parse_scheme(ParameterHandler &prm);
 
+    /// @p tau: the step matrix built now (the first step's).
     TimeIntegrator(const Scheme                         &scheme,
                    const double                          tau,
                    const SystemMatrices                 &system,
@@ -269,14 +277,19 @@ namespace dyncontact
                    const ActiveSetSolver::NearNullSpace &near_null_space,
                    const MPI_Comm                        comm);
 
-    /// The initial velocity of the scheme (N-CS++: eq. 12c; the others keep
-    /// udot_0).
+    /// The initial velocity of the scheme with the first step's @p tau
+    /// (N-CS++: eq. 12c; the others keep udot_0).
     StepReport
-    initialize(VectorType &u, VectorType &udot);
+    initialize(const double tau, VectorType &u, VectorType &udot);
 
-    /// Advances (u, udot) from t_n to t_{n+1}.
+    /// Advances (u, udot) from t_n to t_{n+1} = t_n + @p tau. The step
+    /// matrix S of a tau not seen before is built now; @p is_level: it is
+    /// kept for later steps (StepOperators::set_time_step()).
     StepReport
-    step(VectorType &u, VectorType &udot);
+    step(const double tau,
+         const bool   is_level,
+         VectorType  &u,
+         VectorType  &udot);
 
     /// u <- P(u), the M-projection onto K_h (after a mesh transfer).
     void
@@ -321,13 +334,8 @@ namespace dyncontact
       return scheme;
     }
 
-    double
-    time_step() const
-    {
-      return operators.tau();
-    }
-
-    /// max_i S_ii / M_ii of the step matrix S = M + tau^2/4 A + tau/2 B.
+    /// max_i S_ii / M_ii of the step matrix S = M + tau^2/4 A + tau/2 B of
+    /// the last step (or of the tau the integrator was made with).
     double
     inertia_ratio() const
     {
@@ -349,13 +357,6 @@ namespace dyncontact
       return operators.condition_bound();
     }
 
-    /// Steps with @p tau from now on (StepOperators::set_time_step()).
-    void
-    set_time_step(const double tau, const bool is_level)
-    {
-      operators.set_time_step(tau, is_level);
-    }
-
     /// The operators (for the step control's estimates).
     const StepOperators &
     get_operators() const
@@ -363,18 +364,11 @@ namespace dyncontact
       return operators;
     }
 
-    /// Factor from a multiplier mu_p to the contact force: 2/tau^2 for the
-    /// dynamic schemes (eq. 13), 1 for the static problem.
-    double
-    force_factor() const
-    {
-      return scheme.is_static ? 1. : 2. / (time_step() * time_step());
-    }
 
   private:
-    /// A report with every per-row list sized and zero.
+    /// A report of a step of @p tau with every per-row list sized and zero.
     StepReport
-    empty_report() const;
+    empty_report(const double tau) const;
 
     const Scheme   scheme;
     StepOperators  operators;

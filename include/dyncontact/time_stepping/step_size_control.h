@@ -11,7 +11,7 @@ namespace dyncontact
 {
   /**
    * The estimates of 'Time step control = adaptive' (doc/running.md,
-   * "Adaptive time steps"); SimulationControl owns tau and acts on them.
+   * "Adaptive time steps"); TimeStepController owns tau and acts on them.
    *
    * Event location. The complementarity of a contact row changes sign
    * inside a step when the row comes into contact (gap g_p - (C u)_p from
@@ -40,14 +40,15 @@ namespace dyncontact
   class StepSizeControl
   {
   public:
-    /// The fraction theta in (0, 1] of the trial step (from u_old, udot_old
+    /// The fraction theta in (0, 1] of the trial step (of length trial.tau,
+    /// with the @p operators of that tau; from u_old, udot_old
     /// with @p active_before and the rows' forces @p forces_before to the
     /// trial @p u with @p trial) at which to end it, over all ranks: at its
     /// first contact event, or at half the time to an event in the step
     /// after it (N-CS++'s projection looks one step ahead); 1 if none is
     /// predicted after the first hundredth of the step.
     static double
-    event_fraction(const TimeIntegrator      &integrator,
+    event_fraction(const StepOperators       &operators,
                    const ContactRowOperator  &row_operator,
                    const std::vector<char>   &active_before,
                    const std::vector<char>   &settled,

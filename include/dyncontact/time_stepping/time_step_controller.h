@@ -1,0 +1,247 @@
+#ifndef dyncontact_time_stepping_time_step_controller_h
+#define dyncontact_time_stepping_time_step_controller_h
+
+#include <dyncontact/time_stepping/step_size_control.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace dyncontact
+{
+  /**
+   * The one owner of the time step tau (doc/algorithms.md, "Adaptive time
+   * steps"). The time loop asks it for the tau of a trial step and hands it
+   * the trial; it answers accept, or retry (from the start of the step)
+   * with the tau it has set: halved after a failed solve or an error
+   * estimate above the tolerance, shortened to the predicted moment of a
+   * contact event. It holds what these answers depend on: the parameters,
+   * the level tau_level and the present tau, the error estimator
+   * (StepSizeControl), the contact rows' forces and states of the last
+   * accepted step, and the counts of located events and repeated steps;
+   * and it saves and loads all of that in checkpoints.
+   *
+   * With 'Time step control = fixed' every step takes Time step; with
+   * 'Time step adaptation' a failed step is retried with tau/2 (down to
+   * Time step / 1024). With 'adaptive' tau moves between the levels
+   * Time step * 2^k inside [Minimum time step, Maximum time step]; a step
+   * that is shortened (to an event, or to End time) is not a level, and
+   * the step after it returns to the level.
+   *
+   * The integrator stores no tau: it is handed the trial's tau with each
+   * step, and each StepReport carries the tau of its step.
+   */
+  class TimeStepController
+  {
+  public:
+    /// Declares Time integration/Time step, Time step adaptation, Time
+    /// step control, Event location, Minimum/Maximum time step, Time step
+    /// tolerance.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads and checks the parameters; @p is_static: one solve, no time
+    /// step control; @p end_time bounds the number of steps.
+    void
+    parse_parameters(ParameterHandler &prm,
+                     const bool        is_static,
+                     const double      end_time);
+
+    /// The tau of the next trial (after an accepted step: the level the
+    /// next step starts from).
+    double
+    get_timestep() const
+    {
+      return tau;
+    }
+
+    /// Whether 'Time step control = adaptive'.
+    bool
+    is_adaptive() const
+    {
+      return adaptive;
+    }
+
+    double
+    get_minimum_timestep() const
+    {
+      return min_time_step;
+    }
+
+    double
+    get_maximum_timestep() const
+    {
+      return max_time_step;
+    }
+
+    /// Whether the present trial is shortened (to an event or End time):
+    /// its step matrix is not kept as a level's.
+    bool
+    step_is_shortened() const
+    {
+      return tau != tau_level;
+    }
+
+    /// The contact rows changed (a new mesh, or the first one): forgets
+    /// the estimates and the rows' last forces and states.
+    void
+    reset(const std::size_t n_rows);
+
+    /// A new step from @p time (until a trial is accepted).
+    void
+    begin_step(const double time, const double end_time);
+
+    /// The tau of the next trial of the present step: get_timestep(), but
+    /// a step of the adaptive control that would pass End time ends there.
+    double
+    trial_timestep();
+
+    /// The trial failed (a solve did not converge, or the state is not
+    /// finite): true, with tau halved for a retry from the start of the
+    /// step, where the control allows it (adaptive, or 'Time step
+    /// adaptation' down to Time step / 1024); false otherwise.
+    bool
+    retry_after_failure();
+
+    /// Which contact events the adaptive control locates.
+    enum class EventLocation
+    {
+      none,
+      onset_and_separation,
+      every_row
+    };
+
+    /// What to do with a converged trial step.
+    enum class Verdict
+    {
+      /// keep it
+      accept,
+      /// repeat it from the start of the step with the new get_timestep()
+      retry
+    };
+
+    /// The adaptive control's judgement of the converged @p trial from
+    /// (@p u_old, @p udot_old) with the active sets @p active_before to
+    /// (@p u, @p udot): retry, shortened to a contact event predicted
+    /// inside it (once per step) or halved where its error estimate
+    /// exceeds the tolerance; otherwise accept, with the trial's error
+    /// estimate set. Over all ranks of @p comm. With fixed tau: accept.
+    Verdict
+    judge(const StepOperators      &operators,
+          const ContactRowOperator &row_operator,
+          const std::vector<char>  &active_before,
+          const VectorType         &u_old,
+          const VectorType         &udot_old,
+          const VectorType         &u,
+          const VectorType         &udot,
+          StepReport               &trial,
+          const MPI_Comm            comm);
+
+    /// The step that was accepted.
+    struct AcceptedStep
+    {
+      /// its length
+      double tau = 0.;
+      /// whether tau changed since the step before (t_{n+1} is then
+      /// counted from t_n: SimulationControl::advance())
+      bool tau_changed = false;
+    };
+
+    /// The trial was accepted (after judge(), or with fixed tau): keeps the
+    /// rows' forces and states for the next step's event location, returns
+    /// to the level after a shortened step and doubles the level where the
+    /// estimates allow it.
+    AcceptedStep
+    accept();
+
+    /// Steps shortened to a located event, and steps repeated because
+    /// their estimate exceeded the tolerance.
+    unsigned int
+    n_located_events() const
+    {
+      return estimator.located_events;
+    }
+
+    unsigned int
+    n_repeated_steps() const
+    {
+      return estimator.repeated_steps;
+    }
+
+    /// Whether a checkpoint carries the adaptive control's vectors (the
+    /// rows' states in the flags, the last acceleration).
+    bool
+    has_checkpoint_vectors() const
+    {
+      return adaptive;
+    }
+
+    /// tau, its level and the estimator's scalars into @p state; with the
+    /// adaptive control also each row's state (+4 at its eliminated DoF of
+    /// @p flags, which hold the integrator's active sets: a row that
+    /// changed its state in the last step) and the estimator's last
+    /// acceleration (zero without history) into @p acceleration.
+    void
+    save(std::map<std::string, std::string> &state,
+         const ContactRows                  &rows,
+         VectorType                         &flags,
+         VectorType                         &acceleration) const;
+
+    /// The inverse of save(), on the mesh the checkpoint's vectors were
+    /// transferred to (@p flags and @p acceleration are read only with the
+    /// adaptive control).
+    void
+    load(const std::map<std::string, std::string> &state,
+         const ContactRows                        &rows,
+         const VectorType                         &flags,
+         const VectorType                         &acceleration);
+
+  private:
+    /// The level tau/2 (adaptive: false at the Minimum time step).
+    bool
+    halve();
+
+    /// The level 2 tau (false at the Maximum time step).
+    bool
+    grow();
+
+    /// The next trial takes @p new_tau < the level; the level is kept.
+    void
+    shorten(const double new_tau);
+
+    // parameters
+    double        time_step            = 0.0125;
+    bool          time_step_adaptation = false;
+    bool          is_static            = false;
+    bool          adaptive             = false;
+    double        min_time_step        = 0.;
+    double        max_time_step        = 0.;
+    double        tolerance            = 1e-2;
+    EventLocation event_location       = EventLocation::onset_and_separation;
+
+    // state
+    double tau       = 0.0125;
+    double tau_level = 0.0125;
+    /// tau changed since the last accepted step
+    bool tau_changed = false;
+    /// the present step has been shortened to a located event
+    bool event_located = false;
+    /// the estimates of the trial that judge() accepted allow a larger tau
+    bool may_grow = false;
+    /// the present step's start and the End time
+    double          step_start    = 0.;
+    double          step_end_time = 0.;
+    StepSizeControl estimator;
+    /// per row: the contact force of the last accepted step, and whether
+    /// that step left the row in the state it started in
+    std::vector<double> row_forces;
+    std::vector<char>   settled_rows;
+  };
+} // namespace dyncontact
+
+#endif

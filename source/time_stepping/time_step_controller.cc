@@ -1,0 +1,353 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/core/input_checks.h>
+#include <dyncontact/time_stepping/row_force.h>
+#include <dyncontact/time_stepping/time_step_controller.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  void
+  TimeStepController::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("Time step",
+                      "0.0125",
+                      Patterns::Double(),
+                      "Time step tau, in s (> 0).");
+    prm.declare_entry("Time step adaptation",
+                      "false",
+                      Patterns::Bool(),
+                      "If a step's active-set iteration fails, retry it with "
+                      "half the time step (and keep that), down to Time step "
+                      "/ 1024; otherwise the run stops with a message.");
+    prm.declare_entry(
+      "Time step control",
+      "fixed",
+      Patterns::Selection("fixed|adaptive"),
+      "fixed: every step takes Time step. adaptive: tau moves between the "
+      "levels Time step * 2^k inside [Minimum time step, Maximum time "
+      "step]: a step whose error estimate (see doc/running.md) exceeds "
+      "Time step tolerance is repeated with tau/2, tau doubles after two "
+      "steps below 1/8 of it; a step that would bring a contact row into "
+      "contact (or release one) is shortened to end at the predicted "
+      "moment of that event, and the last step ends at End time. Not used "
+      "by the static scheme.");
+    prm.declare_entry(
+      "Event location",
+      "onset and separation",
+      Patterns::Selection("onset and separation|every row|none"),
+      "Adaptive control: which contact events end a step at their "
+      "predicted moment. onset and separation: the first row to come into "
+      "contact when none is active, and the release when no row stays "
+      "active; every row: each row that comes into contact or is released "
+      "(in a contact zone that grows node by node nearly every step is "
+      "shortened, each with its own step matrix); none.");
+    prm.declare_entry("Minimum time step",
+                      "0",
+                      Patterns::Double(),
+                      "Smallest tau of the adaptive control, in s (> 0 and "
+                      "<= Time step; 0 means Time step / 64).");
+    prm.declare_entry("Maximum time step",
+                      "0",
+                      Patterns::Double(),
+                      "Largest tau of the adaptive control, in s (>= Time "
+                      "step; 0 means Time step).");
+    prm.declare_entry("Time step tolerance",
+                      "0.01",
+                      Patterns::Double(),
+                      "Adaptive control: the largest error estimate of a "
+                      "step that is accepted, relative to the velocity "
+                      "scale sqrt(2 E) (dimensionless, > 0).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  TimeStepController::parse_parameters(ParameterHandler &prm,
+                                       const bool        static_problem,
+                                       const double      end_time)
+  {
+    prm.enter_subsection("Time integration");
+    time_step            = prm.get_double("Time step");
+    time_step_adaptation = prm.get_bool("Time step adaptation");
+    adaptive = prm.get("Time step control") == "adaptive" && !static_problem;
+    min_time_step = prm.get_double("Minimum time step");
+    max_time_step = prm.get_double("Maximum time step");
+    tolerance     = prm.get_double("Time step tolerance");
+    {
+      const std::string location = prm.get("Event location");
+      event_location             = location == "none" ? EventLocation::none :
+                                   location == "every row" ?
+                                                        EventLocation::every_row :
+                                                        EventLocation::onset_and_separation;
+    }
+    prm.leave_subsection();
+    AssertThrow(std::isfinite(time_step) && time_step > 0.,
+                ExcMessage("Time integration/Time step must be a finite "
+                           "number > 0 (s); got " +
+                           format_number(time_step) + "."));
+    AssertThrow(end_time / time_step < 1e8,
+                ExcMessage("Time integration: End time / Time step = " +
+                           format_number(end_time / time_step) +
+                           " steps; at most 1e8 steps are allowed."));
+    if (min_time_step == 0.)
+      min_time_step = time_step / 64.;
+    if (max_time_step == 0.)
+      max_time_step = time_step;
+    // the adaptive control's parameters matter only with it
+    if (adaptive)
+      {
+        AssertThrow(std::isfinite(min_time_step) && min_time_step > 0. &&
+                      min_time_step <= time_step,
+                    ExcMessage("Time integration/Minimum time step must be a "
+                               "finite number in (0, Time step = " +
+                               format_number(time_step) +
+                               "] (s), or 0 for Time step / 64; got " +
+                               format_number(min_time_step) + "."));
+        AssertThrow(std::isfinite(max_time_step) && max_time_step >= time_step,
+                    ExcMessage("Time integration/Maximum time step must be a "
+                               "finite number >= Time step = " +
+                               format_number(time_step) +
+                               " (s), or 0 for Time step; got " +
+                               format_number(max_time_step) + "."));
+        AssertThrow(std::isfinite(tolerance) && tolerance > 0.,
+                    ExcMessage("Time integration/Time step tolerance must be "
+                               "a finite number > 0; got " +
+                               format_number(tolerance) + "."));
+        AssertThrow(end_time / min_time_step < 1e9,
+                    ExcMessage("Time integration: End time / Minimum time "
+                               "step = " +
+                               format_number(end_time / min_time_step) +
+                               " steps; at most 1e9 are allowed: raise "
+                               "Time integration/Minimum time step."));
+      }
+    is_static   = static_problem;
+    tau         = time_step;
+    tau_level   = time_step;
+    tau_changed = false;
+  }
+
+
+
+  void
+  TimeStepController::reset(const std::size_t n_rows)
+  {
+    estimator.reset();
+    row_forces.clear();
+    settled_rows.assign(n_rows, 1);
+  }
+
+
+
+  void
+  TimeStepController::begin_step(const double time, const double end_time)
+  {
+    step_start    = time;
+    step_end_time = end_time;
+    event_located = false;
+    may_grow      = false;
+  }
+
+
+
+  double
+  TimeStepController::trial_timestep()
+  {
+    if (adaptive && step_start + tau > step_end_time)
+      shorten(step_end_time - step_start);
+    return tau;
+  }
+
+
+
+  bool
+  TimeStepController::retry_after_failure()
+  {
+    event_located = false;
+    if (adaptive)
+      return halve();
+    if (!time_step_adaptation || is_static ||
+        tau <= time_step / 1024. * (1. + 1e-12))
+      return false;
+    tau /= 2.;
+    tau_level   = tau;
+    tau_changed = true;
+    return true;
+  }
+
+
+
+  TimeStepController::Verdict
+  TimeStepController::judge(const StepOperators      &operators,
+                            const ContactRowOperator &row_operator,
+                            const std::vector<char>  &active_before,
+                            const VectorType         &u_old,
+                            const VectorType         &udot_old,
+                            const VectorType         &u,
+                            const VectorType         &udot,
+                            StepReport               &trial,
+                            const MPI_Comm            comm)
+  {
+    if (!adaptive)
+      return Verdict::accept;
+    // a contact row that comes into contact or is released inside the step:
+    // end the step at the predicted moment (once per step)
+    if (!event_located && event_location != EventLocation::none)
+      {
+        const double theta =
+          StepSizeControl::event_fraction(operators,
+                                          row_operator,
+                                          active_before,
+                                          settled_rows,
+                                          row_forces,
+                                          u_old,
+                                          udot_old,
+                                          u,
+                                          trial,
+                                          event_location ==
+                                            EventLocation::every_row,
+                                          comm);
+        // not below the Minimum time step
+        if (theta < 1. - 1e-2 && theta * tau >= min_time_step)
+          {
+            shorten(theta * tau);
+            event_located = true;
+            ++estimator.located_events;
+            return Verdict::retry;
+          }
+      }
+    const double eta = estimator.estimate(operators, udot_old, udot, tau);
+    // a level step above the tolerance is repeated with tau/2
+    if (eta > tolerance && !step_is_shortened() && halve())
+      {
+        event_located = false;
+        ++estimator.repeated_steps;
+        return Verdict::retry;
+      }
+    trial.error_estimate = eta;
+    may_grow = estimator.accept(udot_old, udot, tau, eta, tolerance) &&
+               !step_is_shortened();
+    row_forces.resize(trial.active.size());
+    settled_rows.resize(trial.active.size());
+    for (unsigned int p = 0; p < row_forces.size(); ++p)
+      {
+        row_forces[p]   = row_force(trial, p);
+        settled_rows[p] = (trial.active[p] == active_before[p]);
+      }
+    return Verdict::accept;
+  }
+
+
+
+  TimeStepController::AcceptedStep
+  TimeStepController::accept()
+  {
+    AcceptedStep step;
+    step.tau         = tau;
+    step.tau_changed = tau_changed;
+    tau_changed      = false;
+    if (tau != tau_level)
+      {
+        // after a shortened step: back to the level
+        tau         = tau_level;
+        tau_changed = true;
+      }
+    if (may_grow)
+      grow();
+    may_grow = false;
+    return step;
+  }
+
+
+
+  bool
+  TimeStepController::halve()
+  {
+    if (tau_level / 2. < min_time_step * (1. - 1e-12))
+      return false;
+    tau_level /= 2.;
+    tau         = tau_level;
+    tau_changed = true;
+    return true;
+  }
+
+
+
+  bool
+  TimeStepController::grow()
+  {
+    if (2. * tau_level > max_time_step * (1. + 1e-12))
+      return false;
+    tau_level *= 2.;
+    tau         = tau_level;
+    tau_changed = true;
+    return true;
+  }
+
+
+
+  void
+  TimeStepController::shorten(const double new_tau)
+  {
+    Assert(new_tau > 0. && new_tau <= tau_level, ExcInternalError());
+    tau         = new_tau;
+    tau_changed = true;
+  }
+
+
+
+  void
+  TimeStepController::save(std::map<std::string, std::string> &state,
+                           const ContactRows                  &rows,
+                           VectorType                         &flags,
+                           VectorType &acceleration) const
+  {
+    auto exact = [](const double x) {
+      std::ostringstream s;
+      s << std::setprecision(17) << x;
+      return s.str();
+    };
+    state["tau"]       = exact(tau);
+    state["tau_level"] = exact(tau_level);
+    estimator.save(state);
+    if (!adaptive)
+      return;
+    // + 4: a row that changed its state in the last step
+    for (unsigned int p = 0; p < rows.size(); ++p)
+      if (p < settled_rows.size() && !settled_rows[p])
+        flags(rows.rows[p].eliminated_dof()) += 4.;
+    flags.compress(VectorOperation::insert);
+    // the error estimate's last acceleration (zero if it has none)
+    acceleration = 0.;
+    if (estimator.get_acceleration().size() == acceleration.size())
+      acceleration = estimator.get_acceleration();
+  }
+
+
+
+  void
+  TimeStepController::load(const std::map<std::string, std::string> &state,
+                           const ContactRows                        &rows,
+                           const VectorType                         &flags,
+                           const VectorType &acceleration)
+  {
+    tau = std::stod(state.at("tau"));
+    tau_level =
+      state.count("tau_level") ? std::stod(state.at("tau_level")) : tau;
+    // t = t_base + k tau is counted from the checkpoint's time
+    tau_changed = true;
+    reset(rows.size());
+    if (!adaptive)
+      return;
+    estimator.load(state, acceleration);
+    for (unsigned int p = 0; p < rows.size(); ++p)
+      settled_rows[p] =
+        (std::lround(flags(rows.rows[p].eliminated_dof())) & 4) == 0;
+  }
+} // namespace dyncontact
