@@ -65,7 +65,7 @@ main(int argc, char **argv)
     // three level steps: 0.3, 0.6, 0.9
     for (unsigned int k = 0; k < 3; ++k)
       {
-        tau.begin_step(control.get_time(), control.get_end_time());
+        tau.begin_step(control.get_time());
         const double trial = tau.trial_timestep();
         const auto   step  = tau.accept();
         control.advance(step.tau, step.tau_changed);
@@ -76,7 +76,7 @@ main(int argc, char **argv)
     check("three steps of 0.3 end at t = 3 * 0.3 exactly",
           control.get_time() == 3 * 0.3 && control.get_step() == 3);
     // the last step ends at End time: 0.1, shortened
-    tau.begin_step(control.get_time(), control.get_end_time());
+    tau.begin_step(control.get_time());
     const double last = tau.trial_timestep();
     check("the last trial ends at End time", std::abs(last - 0.1) < 1e-15);
     check("and is shortened (not a level)", tau.step_is_shortened());
@@ -106,7 +106,7 @@ main(int argc, char **argv)
     resumed.parse_parameters(prm, false, 1.);
     resumed.load(state, rows, none, none);
     check("a checkpoint restores tau", resumed.get_timestep() == 0.075);
-    resumed.begin_step(0.5, 1.);
+    resumed.begin_step(0.5);
     resumed.trial_timestep();
     check("and counts the time anew after a resume",
           resumed.accept().tau_changed);
@@ -142,8 +142,7 @@ main(int argc, char **argv)
     fixed_control.parse_parameters(prm, false);
     while (fixed_control.keep_going())
       {
-        fixed.begin_step(fixed_control.get_time(),
-                         fixed_control.get_end_time());
+        fixed.begin_step(fixed_control.get_time());
         clipped         = clipped || fixed.trial_timestep() != 0.25;
         const auto step = fixed.accept();
         fixed_control.advance(step.tau, step.tau_changed);

@@ -314,7 +314,7 @@ namespace dyncontact
     setup_discretization();
     VectorType                flags, acceleration;
     std::vector<VectorType *> vectors = {&u, &udot, &flags};
-    if (time_step_controller.has_checkpoint_vectors())
+    if (time_step_controller.is_adaptive())
       vectors.push_back(&acceleration);
     system->deserialize(vectors);
     control.load(state);
@@ -413,7 +413,7 @@ namespace dyncontact
     integrator->save_active_sets(flags);
     time_step_controller.save(state, contact->get_rows(), flags, acceleration);
     std::vector<const VectorType *> vectors = {&u, &udot, &flags};
-    if (time_step_controller.has_checkpoint_vectors())
+    if (time_step_controller.is_adaptive())
       vectors.push_back(&acceleration);
     system->prepare_for_serialization(vectors);
     triangulation.save(Checkpoints::mesh_file(dir));
@@ -472,7 +472,7 @@ namespace dyncontact
     udot_old = udot;
     // where the step starts from: its active sets
     const auto start_sets = integrator->active_sets();
-    time_step_controller.begin_step(control.get_time(), control.get_end_time());
+    time_step_controller.begin_step(control.get_time());
     while (true)
       {
         const double tau = time_step_controller.trial_timestep();

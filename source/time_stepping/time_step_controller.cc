@@ -71,8 +71,9 @@ namespace dyncontact
   void
   TimeStepController::parse_parameters(ParameterHandler &prm,
                                        const bool        static_problem,
-                                       const double      end_time)
+                                       const double      end)
   {
+    end_time = end;
     prm.enter_subsection("Time integration");
     time_step            = prm.get_double("Time step");
     time_step_adaptation = prm.get_bool("Time step adaptation");
@@ -146,10 +147,9 @@ namespace dyncontact
 
 
   void
-  TimeStepController::begin_step(const double time, const double end_time)
+  TimeStepController::begin_step(const double time)
   {
     step_start    = time;
-    step_end_time = end_time;
     event_located = false;
     may_grow      = false;
   }
@@ -159,8 +159,8 @@ namespace dyncontact
   double
   TimeStepController::trial_timestep()
   {
-    if (adaptive && step_start + tau > step_end_time)
-      shorten(step_end_time - step_start);
+    if (adaptive && step_start + tau > end_time)
+      shorten(end_time - step_start);
     return tau;
   }
 

@@ -46,7 +46,8 @@ namespace dyncontact
     declare_parameters(ParameterHandler &prm);
 
     /// Reads and checks the parameters; @p is_static: one solve, no time
-    /// step control; @p end_time bounds the number of steps.
+    /// step control; @p end_time (SimulationControl's End time) bounds the
+    /// number of steps, and the adaptive control's last step ends there.
     void
     parse_parameters(ParameterHandler &prm,
                      const bool        is_static,
@@ -94,7 +95,7 @@ namespace dyncontact
 
     /// A new step from @p time (until a trial is accepted).
     void
-    begin_step(const double time, const double end_time);
+    begin_step(const double time);
 
     /// The tau of the next trial of the present step: get_timestep(), but
     /// a step of the adaptive control that would pass End time ends there.
@@ -152,10 +153,10 @@ namespace dyncontact
       bool tau_changed = false;
     };
 
-    /// The trial was accepted (after judge(), or with fixed tau): keeps the
-    /// rows' forces and states for the next step's event location, returns
-    /// to the level after a shortened step and doubles the level where the
-    /// estimates allow it.
+    /// The trial was accepted (after judge(), which keeps the rows' forces
+    /// and states for the next step's event location, or with fixed tau):
+    /// returns to the level after a shortened step and doubles the level
+    /// where the estimates allow it.
     AcceptedStep
     accept();
 
@@ -173,16 +174,9 @@ namespace dyncontact
       return estimator.repeated_steps;
     }
 
-    /// Whether a checkpoint carries the adaptive control's vectors (the
-    /// rows' states in the flags, the last acceleration).
-    bool
-    has_checkpoint_vectors() const
-    {
-      return adaptive;
-    }
-
     /// tau, its level and the estimator's scalars into @p state; with the
-    /// adaptive control also each row's state (+4 at its eliminated DoF of
+    /// adaptive control (only then does a checkpoint carry these vectors)
+    /// also each row's state (+4 at its eliminated DoF of
     /// @p flags, which hold the integrator's active sets: a row that
     /// changed its state in the last step) and the estimator's last
     /// acceleration (zero without history) into @p acceleration.
@@ -222,6 +216,7 @@ namespace dyncontact
     double        min_time_step        = 0.;
     double        max_time_step        = 0.;
     double        tolerance            = 1e-2;
+    double        end_time             = 0.;
     EventLocation event_location       = EventLocation::onset_and_separation;
 
     // state
@@ -233,9 +228,8 @@ namespace dyncontact
     bool event_located = false;
     /// the estimates of the trial that judge() accepted allow a larger tau
     bool may_grow = false;
-    /// the present step's start and the End time
-    double          step_start    = 0.;
-    double          step_end_time = 0.;
+    /// the time the present step starts from
+    double          step_start = 0.;
     StepSizeControl estimator;
     /// per row: the contact force of the last accepted step, and whether
     /// that step left the row in the state it started in
