@@ -26,13 +26,15 @@
 // of shortened steps and the contact start are printed; the 2-rank variant
 // (adaptive_time_step.mpirun=2) must print the same (event location once
 // depended on round-off that differs between 1 and 2 ranks).
-// And a checkpointed adaptive run resumed from half time gives the same
-// statistics as the uninterrupted one (tau levels and the estimator's
-// history are in the checkpoint).
+// And a checkpointed adaptive run resumed from half time, or from the step
+// before the located release, gives the same statistics as the
+// uninterrupted one (tau levels, the estimator's history and the rows'
+// forces and states are in the checkpoint).
 
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <tuple>
 
 #include "tests.h"
 
@@ -223,27 +225,53 @@ main(int argc, char **argv)
           << "\n";
   }
 
-  // resumed from a checkpoint at half time: the same statistics
-  auto prm = [&](const std::string &run, const double end, const bool resume) {
+  // resumed from a checkpoint at half time, and from the step before the
+  // located release (the rows' forces of that step are in the checkpoint;
+  // without them the first step after the resume located no release): the
+  // same statistics
+  auto prm = [&](const std::string &run,
+                 const double       end,
+                 const bool         resume,
+                 const unsigned int interval) {
     return bar_prm(2, "N-CS++", 40, tau, end, adaptive) +
            "set Output directory = results-adaptive-" + run + "\n" +
-           "subsection Checkpointing\n  set Interval in steps = 60\n" +
-           "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
+           "subsection Checkpointing\n  set Interval in steps = " +
+           std::to_string(interval) +
+           "\n  set Resume = " + (resume ? "true" : "false") + "\nend\n";
   };
-  const Statistics full = run(prm("full", 2.5, false));
-  run(prm("split", 1.25, false));
-  const Statistics resumed    = run(prm("split", 2.5, true));
-  double           difference = 0.;
-  bool             same_shape =
-    full.rows.size() == resumed.rows.size() && full.columns == resumed.columns;
-  for (unsigned int c = 0; same_shape && c < full.columns.size(); ++c)
-    if (full.columns[c] != "step_wall_time")
-      for (unsigned int i = 0; i < full.rows.size(); ++i)
-        difference =
-          std::max(difference, std::abs(full.rows[i][c] - resumed.rows[i][c]));
-  std::cout << "resumed: " << resumed.rows.size() << " rows, full "
-            << full.rows.size() << ", largest difference " << difference
-            << std::endl;
-  log() << "adaptive run resumed at half time: same statistics (1e-12): "
-        << check(same_shape && difference <= 1e-12) << "\n";
+  const Statistics full = run(prm("full", 2.5, false, 60));
+  // the release: the first step without contact force after one with it
+  const auto   force   = full.column("contact_force");
+  const auto   times   = full.column("time");
+  unsigned int release = 0;
+  for (unsigned int i = 1; i < force.size() && release == 0; ++i)
+    if (force[i] == 0. && force[i - 1] > 0.)
+      release = i;
+  log() << "the release is located (a shortened step): "
+        << check(release > 1 && full.column("time_step")[release] < 0.99 * tau)
+        << "\n";
+  for (const auto &[what, end, interval] :
+       {std::make_tuple(std::string("at half time"), 1.25, 60u),
+        std::make_tuple(std::string("from the step before the release"),
+                        times[release - 1],
+                        release - 1)})
+    {
+      run(prm("split-" + std::to_string(interval), end, false, interval));
+      const Statistics resumed =
+        run(prm("split-" + std::to_string(interval), 2.5, true, interval));
+      double difference = 0.;
+      bool   same_shape = full.rows.size() == resumed.rows.size() &&
+                        full.columns == resumed.columns;
+      for (unsigned int c = 0; same_shape && c < full.columns.size(); ++c)
+        if (full.columns[c] != "step_wall_time")
+          for (unsigned int i = 0; i < full.rows.size(); ++i)
+            difference =
+              std::max(difference,
+                       std::abs(full.rows[i][c] - resumed.rows[i][c]));
+      std::cout << "resumed " << what << ": " << resumed.rows.size()
+                << " rows, full " << full.rows.size() << ", largest difference "
+                << difference << std::endl;
+      log() << "adaptive run resumed " << what << ": same statistics (1e-12): "
+            << check(same_shape && difference <= 1e-12) << "\n";
+    }
 }

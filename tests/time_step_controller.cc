@@ -100,11 +100,11 @@ main(int argc, char **argv)
     // a checkpoint's tau and level come back
     std::map<std::string, std::string> state;
     ContactRows                        rows;
-    VectorType                         none;
-    tau.save(state, rows, none, none);
+    VectorType                         flags;
+    const auto         vectors = tau.save(state, rows, flags, flags);
     TimeStepController resumed;
     resumed.parse_parameters(prm, false, 1.);
-    resumed.load(state, rows, none, none);
+    resumed.load(state, rows, flags, vectors);
     check("a checkpoint restores tau", resumed.get_timestep() == 0.075);
     resumed.begin_step(0.5);
     resumed.trial_timestep();

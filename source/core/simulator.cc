@@ -312,10 +312,12 @@ namespace dyncontact
     postprocessors->load(state);
     triangulation.load(Checkpoints::mesh_file(dir));
     setup_discretization();
-    VectorType                flags, acceleration;
+    VectorType              flags;
+    std::vector<VectorType> controller_vectors(
+      time_step_controller.n_checkpoint_vectors(state));
     std::vector<VectorType *> vectors = {&u, &udot, &flags};
-    if (time_step_controller.is_adaptive())
-      vectors.push_back(&acceleration);
+    for (VectorType &v : controller_vectors)
+      vectors.push_back(&v);
     system->deserialize(vectors);
     control.load(state);
     AssertThrow(control.get_end_time() > control.get_time(),
@@ -324,7 +326,10 @@ namespace dyncontact
                            " s is not after the checkpoint's time t = " +
                            format_number(control.get_time()) +
                            " s: a resumed run needs a later End time."));
-    time_step_controller.load(state, contact->get_rows(), flags, acceleration);
+    time_step_controller.load(state,
+                              contact->get_rows(),
+                              flags,
+                              controller_vectors);
     make_integrator();
     integrator->load_active_sets(flags);
     if (time_step_controller.is_adaptive() &&
@@ -409,12 +414,13 @@ namespace dyncontact
     TimerOutput::Scope t(*timer, "checkpoint");
     const std::string  dir = checkpoints.begin(control.get_step());
     std::map<std::string, std::string> state;
-    VectorType                         flags(u), acceleration(u);
+    VectorType                         flags(u);
     integrator->save_active_sets(flags);
-    time_step_controller.save(state, contact->get_rows(), flags, acceleration);
+    const std::vector<VectorType> controller_vectors =
+      time_step_controller.save(state, contact->get_rows(), flags, u);
     std::vector<const VectorType *> vectors = {&u, &udot, &flags};
-    if (time_step_controller.is_adaptive())
-      vectors.push_back(&acceleration);
+    for (const VectorType &v : controller_vectors)
+      vectors.push_back(&v);
     system->prepare_for_serialization(vectors);
     triangulation.save(Checkpoints::mesh_file(dir));
     control.save(state);

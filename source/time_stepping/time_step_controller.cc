@@ -302,11 +302,11 @@ namespace dyncontact
 
 
 
-  void
+  std::vector<VectorType>
   TimeStepController::save(std::map<std::string, std::string> &state,
                            const ContactRows                  &rows,
                            VectorType                         &flags,
-                           VectorType &acceleration) const
+                           const VectorType                   &like) const
   {
     auto exact = [](const double x) {
       std::ostringstream s;
@@ -317,16 +317,35 @@ namespace dyncontact
     state["tau_level"] = exact(tau_level);
     estimator.save(state);
     if (!adaptive)
-      return;
+      return {};
     // + 4: a row that changed its state in the last step
     for (unsigned int p = 0; p < rows.size(); ++p)
       if (p < settled_rows.size() && !settled_rows[p])
         flags(rows.rows[p].eliminated_dof()) += 4.;
     flags.compress(VectorOperation::insert);
+    std::vector<VectorType> vectors(2, like);
     // the error estimate's last acceleration (zero if it has none)
-    acceleration = 0.;
+    VectorType &acceleration = vectors[0];
+    acceleration             = 0.;
     if (estimator.get_acceleration().size() == acceleration.size())
       acceleration = estimator.get_acceleration();
+    // the rows' forces (zero where there are none: no release is located)
+    VectorType &forces = vectors[1];
+    forces             = 0.;
+    for (unsigned int p = 0; p < rows.size() && p < row_forces.size(); ++p)
+      forces(rows.rows[p].eliminated_dof()) = row_forces[p];
+    forces.compress(VectorOperation::insert);
+    state["row_forces"] = "in checkpoint";
+    return vectors;
+  }
+
+
+
+  unsigned int
+  TimeStepController::n_checkpoint_vectors(
+    const std::map<std::string, std::string> &state) const
+  {
+    return adaptive ? 1 + state.count("row_forces") : 0;
   }
 
 
@@ -335,7 +354,7 @@ namespace dyncontact
   TimeStepController::load(const std::map<std::string, std::string> &state,
                            const ContactRows                        &rows,
                            const VectorType                         &flags,
-                           const VectorType &acceleration)
+                           const std::vector<VectorType>            &vectors)
   {
     tau = std::stod(state.at("tau"));
     tau_level =
@@ -345,9 +364,17 @@ namespace dyncontact
     reset(rows.size());
     if (!adaptive)
       return;
-    estimator.load(state, acceleration);
+    AssertThrow(vectors.size() == n_checkpoint_vectors(state),
+                ExcInternalError());
+    estimator.load(state, vectors[0]);
     for (unsigned int p = 0; p < rows.size(); ++p)
       settled_rows[p] =
         (std::lround(flags(rows.rows[p].eliminated_dof())) & 4) == 0;
+    if (vectors.size() > 1)
+      {
+        row_forces.resize(rows.size());
+        for (unsigned int p = 0; p < rows.size(); ++p)
+          row_forces[p] = vectors[1](rows.rows[p].eliminated_dof());
+      }
   }
 } // namespace dyncontact

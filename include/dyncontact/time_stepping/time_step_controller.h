@@ -174,26 +174,35 @@ namespace dyncontact
       return estimator.repeated_steps;
     }
 
-    /// tau, its level and the estimator's scalars into @p state; with the
-    /// adaptive control (only then does a checkpoint carry these vectors)
-    /// also each row's state (+4 at its eliminated DoF of
-    /// @p flags, which hold the integrator's active sets: a row that
-    /// changed its state in the last step) and the estimator's last
-    /// acceleration (zero without history) into @p acceleration.
-    void
+    /**
+     * tau, its level and the estimator's scalars into @p state. With the
+     * adaptive control also each row's state (+4 at its eliminated DoF of
+     * @p flags, which hold the integrator's active sets: a row that changed
+     * its state in the last step), and the vectors returned, nodal vectors
+     * laid out as @p like that the checkpoint carries after u, udot and
+     * the flags: the estimator's last acceleration (zero without history)
+     * and each row's force in the last step at its eliminated DoF (so that
+     * the first step after a resume locates a release as the uninterrupted
+     * run does). None with fixed tau.
+     */
+    std::vector<VectorType>
     save(std::map<std::string, std::string> &state,
          const ContactRows                  &rows,
          VectorType                         &flags,
-         VectorType                         &acceleration) const;
+         const VectorType                   &like) const;
+
+    /// How many vectors save() put into the checkpoint of @p state (older
+    /// checkpoints of the adaptive control have no rows' forces).
+    unsigned int
+    n_checkpoint_vectors(const std::map<std::string, std::string> &state) const;
 
     /// The inverse of save(), on the mesh the checkpoint's vectors were
-    /// transferred to (@p flags and @p acceleration are read only with the
-    /// adaptive control).
+    /// transferred to: @p flags and the n_checkpoint_vectors() @p vectors.
     void
     load(const std::map<std::string, std::string> &state,
          const ContactRows                        &rows,
          const VectorType                         &flags,
-         const VectorType                         &acceleration);
+         const std::vector<VectorType>            &vectors);
 
   private:
     /// The level tau/2 (adaptive: false at the Minimum time step).
