@@ -16,6 +16,8 @@
 // contact (max_penetration must measure how far the bars pass into each
 // other, and a warning name the radius).
 
+#include <boost/crc.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -315,6 +317,16 @@ main(int argc, char **argv)
          "no checkpoint",
          "delete all"},
     {"checkpoint",
+         "time edited to nan, checksums recomputed",
+         resume,
+         "the checkpoint's time t (s) ('time' = 'nan')",
+         "edit time"},
+    {"checkpoint",
+         "time step edited to 1e300, checksums recomputed",
+         resume,
+         "the checkpoint's time step tau (s) ('tau' = '1e300')",
+         "edit tau"},
+    {"checkpoint",
          "End time before the checkpoint",
          resume + "subsection Time integration\n  set End time = 0.01\nend\n",
          "Time integration/End time = 0.01 s is not after"},
@@ -444,7 +456,26 @@ main(int argc, char **argv)
          "in use by another run"},
   };
 
+  // a value of the checkpoint's state.txt replaced, with the checksum
+  // recomputed: an edited, not a damaged, checkpoint
+  auto edit_state = [&](const std::string &key, const std::string &value) {
+    const std::string text = read(ck_step + "/state.txt");
+    std::string       body = text.substr(0, text.rfind("checksum "));
+    const std::size_t at   = body.find("\n" + key + " ") + 1;
+    const std::size_t eol  = body.find('\n', at);
+    const std::size_t length =
+      std::stoul(body.substr(at + key.size() + 1, eol - at - key.size() - 1));
+    body.replace(at,
+                 eol + 1 + length - at,
+                 key + " " + std::to_string(value.size()) + "\n" + value);
+    boost::crc_32_type crc;
+    crc.process_bytes(body.data(), body.size());
+    std::ofstream(ck_step + "/state.txt")
+      << body << "checksum " << std::hex << crc.checksum() << "\n";
+  };
   const std::map<std::string, std::function<void()>> damages = {
+    {"edit time", [&] { edit_state("time", "nan"); }},
+    {"edit tau", [&] { edit_state("tau", "1e300"); }},
     {"truncate data",
      [&] { fs::resize_file(ck_step + "/mesh_fixed.data", 100); }},
     {"flip data",

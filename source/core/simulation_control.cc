@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -178,9 +179,11 @@ namespace dyncontact
   void
   SimulationControl::load(const std::map<std::string, std::string> &state)
   {
-    step        = std::stoul(state.at("step"));
-    time        = std::stod(state.at("time"));
-    next_output = std::stod(state.at("next_output"));
+    const double largest = std::numeric_limits<double>::max();
+    step        = checkpoint_number(state, "step", "step number", 0., 4e9);
+    time        = checkpoint_number(state, "time", "time t (s)", 0., largest);
+    next_output = checkpoint_number(
+      state, "next_output", "next output time (s)", 0., largest);
     // t = t_base + k tau from here on
     time_base   = time;
     steps_since = 0;

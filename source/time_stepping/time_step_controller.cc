@@ -5,8 +5,10 @@
 #include <dyncontact/time_stepping/row_force.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -356,9 +358,19 @@ namespace dyncontact
                            const VectorType                         &flags,
                            const std::vector<VectorType>            &vectors)
   {
-    tau = std::stod(state.at("tau"));
-    tau_level =
-      state.count("tau_level") ? std::stod(state.at("tau_level")) : tau;
+    // no tau above the largest this run could take (Time step and
+    // Maximum time step are the checkpoint's)
+    const double largest  = std::max(time_step, max_time_step) * (1. + 1e-12);
+    const double smallest = std::numeric_limits<double>::min();
+    tau =
+      checkpoint_number(state, "tau", "time step tau (s)", smallest, largest);
+    tau_level = state.count("tau_level") ?
+                  checkpoint_number(state,
+                                    "tau_level",
+                                    "time step level (s)",
+                                    smallest,
+                                    largest) :
+                  tau;
     // t = t_base + k tau is counted from the checkpoint's time
     tau_changed = true;
     reset(rows.size());

@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -40,6 +41,48 @@ namespace dyncontact
             << "]" << (unit.empty() ? "" : " " + unit) << "; got " << value
             << ".";
     AssertThrow(false, dealii::ExcMessage(message.str()));
+  }
+
+  /**
+   * The number stored under @p key in a checkpoint's @p state (its
+   * state.txt), if it is a finite number in [@p min, @p max]; otherwise
+   * stops with a message naming @p what (e.g. "time t (s)"), the key and the
+   * text found. The checksums of state.txt guard against damage; this
+   * guards against a checkpoint whose values were edited (or written by a
+   * run whose state had gone wrong), which would otherwise be blamed on
+   * some parameter of the input.
+   */
+  inline double
+  checkpoint_number(const std::map<std::string, std::string> &state,
+                    const std::string                        &key,
+                    const std::string                        &what,
+                    const double                              min,
+                    const double                              max)
+  {
+    const auto entry = state.find(key);
+    double     value = std::nan("");
+    if (entry != state.end())
+      try
+        {
+          std::size_t end = 0;
+          value           = std::stod(entry->second, &end);
+          if (end != entry->second.size())
+            value = std::nan("");
+        }
+      catch (const std::exception &)
+        {}
+    if (std::isfinite(value) && value >= min && value <= max)
+      return value;
+    std::ostringstream message;
+    message << "Checkpointing/Resume: the checkpoint's " << what << " ('" << key
+            << "' = "
+            << (entry == state.end() ? std::string("missing") :
+                                       "'" + entry->second + "'")
+            << ") is not a finite number in [" << min << ", " << max
+            << "]: the checkpoint is damaged. Resume from another one (the "
+               "previous checkpoint is kept next to it) or start afresh.";
+    AssertThrow(false, dealii::ExcMessage(message.str()));
+    return value;
   }
 } // namespace dyncontact
 
