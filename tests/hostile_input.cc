@@ -451,6 +451,10 @@ main(int argc, char **argv)
          "Dimension"},
     // output directory
     {"output",
+         "an output directory name of 5000 characters",
+         "set Output directory = " + std::string(5000, 'a') + "\n",
+         "cannot be created: File name too long"},
+    {"output",
          "output directory locked by a live run",
          "set Output directory = locked\n",
          "in use by another run"},

@@ -67,11 +67,18 @@ namespace dyncontact
     std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        std::error_code error;
+        // a name too long to show whole is shown by its ends
+        const std::string shown = directory.size() <= 200 ?
+                                    directory :
+                                    directory.substr(0, 100) + "...(" +
+                                      std::to_string(directory.size()) +
+                                      " characters)..." +
+                                      directory.substr(directory.size() - 40);
+        std::error_code   error;
         std::filesystem::create_directories(directory, error);
-        if (!std::filesystem::is_directory(directory))
-          problem = "Output directory '" + directory +
-                    "' cannot be created (or is a file).";
+        if (!std::filesystem::is_directory(directory, error))
+          problem = "Output directory '" + shown + "' cannot be created" +
+                    (error ? ": " + error.message() : " (it is a file)") + ".";
         else if (!create_lock(lock_file))
           {
             // someone else's lock: alive, or left by a killed run?
@@ -81,7 +88,7 @@ namespace dyncontact
             in >> host >> pid;
             const bool alive =
               !in.fail() && pid > 0 && (host != host_name() || lives(pid));
-            if (in.fail() && !std::filesystem::exists(lock_file))
+            if (in.fail() && !std::filesystem::exists(lock_file, error))
               problem =
                 "Output directory '" + directory + "' cannot be written.";
             else if (alive)
