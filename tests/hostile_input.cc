@@ -12,7 +12,8 @@
 // a byte-order mark, a stale lock of a killed run, a viscosity so large
 // that the linear solver's tolerance breaks the energy balance (the monitor
 // must report it) or that the step matrix cannot hold the mass (a warning
-// must say so), and a search radius too small for the rows to catch the
+// must say so), a Time step larger than End time (a warning names where
+// the last step ends), and a search radius too small for the rows to catch the
 // contact (max_penetration must measure how far the bars pass into each
 // other, and a warning name the radius).
 
@@ -627,6 +628,24 @@ main(int argc, char **argv)
   log() << "no such warning for an ordinary bar: "
         << check(plain.status == 0 &&
                  plain.text.find("outweigh the mass") == std::string::npos)
+        << "\n";
+
+  // a Time step larger than End time: one step to t = tau, which the banner
+  // must say, with a warning (the ordinary bar's End time is a multiple)
+  std::ofstream("overshoot.prm")
+    << base << "set Output directory = overshoot\n"
+    << "subsection Time integration\n  set Time step = 0.5\n"
+    << "  set End time = 0.2\nend\n";
+  const Outcome overshoot = run_program("overshoot.prm");
+  log() << "Time step 0.5 s > End time 0.2 s: one step to t = 0.5 s, and a "
+        << "warning: "
+        << check(overshoot.status == 0 &&
+                 overshoot.text.find("1 steps from t = 0 to 0.5 s") !=
+                   std::string::npos &&
+                 overshoot.text.find("the last step ends at t = 0.5 s") !=
+                   std::string::npos &&
+                 plain.text.find("is not reached in whole steps") ==
+                   std::string::npos)
         << "\n";
 
   // a search radius smaller than the gap: no slave node gets a row and the

@@ -61,13 +61,21 @@ namespace dyncontact
            << " s, from t = " << control.get_time() << " to "
            << control.get_end_time() << " s";
     else
-      text << "scheme " << scheme.name
-           << ", tau = " << time_step_controller.get_timestep() << " s, "
-           << std::ceil((control.get_end_time() - control.get_time()) /
-                          time_step_controller.get_timestep() -
-                        1e-9)
-           << " steps from t = " << control.get_time() << " to "
-           << control.get_end_time() << " s";
+      {
+        const double tau = time_step_controller.get_timestep();
+        const double n_steps =
+          std::ceil((control.get_end_time() - control.get_time()) / tau - 1e-9);
+        const double last = control.get_time() + n_steps * tau;
+        text << "scheme " << scheme.name << ", tau = " << tau << " s, "
+             << n_steps << " steps from t = " << control.get_time() << " to "
+             << last << " s";
+        if (last > control.get_end_time() + 1e-9 * tau)
+          text << "\n   warning: End time = " << control.get_end_time()
+               << " s is not reached in whole steps of Time step = " << tau
+               << " s: the last step ends at t = " << last
+               << " s. Choose End time as a multiple of Time step, or 'Time "
+                  "step control = adaptive' (its last step ends at End time).";
+      }
     pcout << text.str() << std::endl;
   }
 
