@@ -17,7 +17,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/mapping_q1.h>
 
-#include <dyncontact/core/parameters.h>
+#include <dyncontact/core/parameter_file.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
 

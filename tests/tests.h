@@ -7,8 +7,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <dyncontact/base/statistics.h>
 #include <dyncontact/core/run.h>
-#include <dyncontact/core/statistics.h>
 
 #include <sys/wait.h>
 

@@ -12,7 +12,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <cctype>

@@ -102,227 +102,26 @@ namespace dyncontact
     row_scalar_dofs.clear();
     unmatched.clear();
     master_surfaces.clear();
+    locally_owned              = system.locally_owned_dofs();
+    locally_relevant           = system.locally_relevant_dofs();
+    const VectorType w_ghosted = system.ghosted(system.get_boundary_weights());
 
-    const auto &fe                 = system.get_fe();
-    const auto &scalar_fe          = system.get_scalar_fe();
-    const auto &dof_handler        = system.get_dof_handler();
-    const auto &scalar_dof_handler = system.get_scalar_dof_handler();
-    const auto &locally_owned      = system.locally_owned_dofs();
-    const auto &mesh_constraints   = system.get_constraints();
-    VectorType  w_ghosted(locally_owned, system.locally_relevant_dofs(), comm);
-    w_ghosted = system.get_boundary_weights();
-
-    auto contains = [](const std::vector<types::boundary_id> &ids,
-                       const types::boundary_id               id) {
-      return std::find(ids.begin(), ids.end(), id) != ids.end();
-    };
-
-    // Calls f(x, dofs, scalar dof) once for every locally owned, non-hanging
-    // node on the boundary parts @p ids.
-    auto for_each_boundary_node =
-      [&](const std::vector<types::boundary_id> &ids, const auto &f) {
-        std::set<types::global_dof_index>    seen;
-        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-        std::vector<types::global_dof_index> scalar_dofs(
-          scalar_fe.n_dofs_per_cell());
-        const auto &unit_points = scalar_fe.get_unit_support_points();
-        auto        scalar_cell = scalar_dof_handler.begin_active();
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            if (cell->is_locally_owned())
-              for (const unsigned int face : cell->face_indices())
-                if (cell->face(face)->at_boundary() &&
-                    contains(ids, cell->face(face)->boundary_id()))
-                  {
-                    cell->get_dof_indices(dofs);
-                    scalar_cell->get_dof_indices(scalar_dofs);
-                    for (unsigned int node = 0;
-                         node < scalar_fe.n_dofs_per_cell();
-                         ++node)
-                      {
-                        if (!scalar_fe.has_support_on_face(node, face))
-                          continue;
-                        std::array<types::global_dof_index, dim> node_dofs;
-                        for (unsigned int d = 0; d < dim; ++d)
-                          node_dofs[d] =
-                            dofs[fe.component_to_system_index(d, node)];
-                        if (!locally_owned.is_element(node_dofs[0]) ||
-                            seen.count(node_dofs[0]))
-                          continue;
-                        seen.insert(node_dofs[0]);
-                        f(mapping.transform_unit_to_real_cell(
-                            cell, unit_points[node]),
-                          node_dofs,
-                          scalar_dofs[node]);
-                      }
-                  }
-            ++scalar_cell;
-          }
-      };
-
-    // completes a row: weight, owner, eliminated component (the free one
-    // with the largest |nu_i|); false for a node without a free component
-    // (a hanging node, or a node fixed by Dirichlet data)
-    auto finish_row = [&](ContactRow &row) {
-      row.weight = w_ghosted(row.entries[0].first);
-      int best   = -1;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (!mesh_constraints.is_constrained(row.entries[d].first) &&
-            std::abs(row.normal[d]) > 1e-12 &&
-            (best < 0 || std::abs(row.normal[d]) > std::abs(row.normal[best])))
-          best = d;
-      row.eliminated = std::max(best, 0);
-      return best >= 0;
-    };
-
-
-    // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
     if (const auto obstacle = scene.obstacle())
-      for_each_boundary_node(
-        scene.contact_boundary_ids(),
-        [&](const Point<dim> &x, const auto &dofs, const auto scalar_dof) {
-          ContactRow row;
-          row.n_components = dim;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              row.entries.emplace_back(dofs[d], -obstacle->normal[d]);
-              row.normal[d]   = -obstacle->normal[d];
-              row.position[d] = x[d];
-            }
-          row.gap = (x - obstacle->point) * obstacle->normal;
-          AssertThrow(std::isfinite(row.gap),
-                      ExcMessage("The gap of the node at (" +
-                                 Utilities::to_string(x[0]) + ", " +
-                                 Utilities::to_string(x[1]) +
-                                 ", ...) to the obstacle is not finite."));
-          AssertThrow(parameters.project_initial_penetration ||
-                        row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
-                      ExcMessage("The initial configuration penetrates the "
-                                 "obstacle: the node at (" +
-                                 Utilities::to_string(x[0]) + ", " +
-                                 Utilities::to_string(x[1]) + ", ...) lies " +
-                                 Utilities::to_string(-row.gap) +
-                                 " m inside it. Correct the scene, or set "
-                                 "'Contact solver/Initial penetration = "
-                                 "project'."));
-          if (finish_row(row))
-            {
-              rows.rows.push_back(row);
-              row_scalar_dofs.push_back(scalar_dof);
-            }
-        });
-
-    // two-body pairs: the mortar-like mapping phi_h onto the master faces
-    // near this rank's slave nodes (a parallel search: no rank holds the
-    // whole master surface)
+      add_obstacle_rows(*obstacle,
+                        boundary_nodes(system,
+                                       mapping,
+                                       scene.contact_boundary_ids()),
+                        w_ghosted,
+                        system.get_constraints());
     const auto pairs = contact_pairs(scene);
     for (unsigned int pair_index = 0; pair_index < pairs.size(); ++pair_index)
-      {
-        const ContactPair &pair = pairs[pair_index];
-        const std::array<std::vector<MasterFace<dim>>, 2> sides = {
-          {local_faces(system, pair.first_side, scene.symmetry_boundary_ids()),
-           local_faces(system,
-                       pair.second_side,
-                       scene.symmetry_boundary_ids())}};
-        std::array<types::global_dof_index, 2> n_faces = {
-          {Utilities::MPI::sum<types::global_dof_index>(sides[0].size(), comm),
-           Utilities::MPI::sum<types::global_dof_index>(sides[1].size(),
-                                                        comm)}};
-        int slave = pair.slave_side;
-        if (slave < 0)
-          {
-            // the finer side is the slave: compare the mean size of the
-            // faces that face the other side (their centre has an image on
-            // it), so that a coarse far field does not count
-            std::array<double, 2> size{{0., 0.}};
-            for (unsigned int s = 0; s < 2; ++s)
-              {
-                std::vector<Point<dim>> centres;
-                for (const auto &face : sides[s])
-                  {
-                    Point<dim> centre;
-                    for (const auto &v : face.vertices)
-                      centre += v / double(face.vertices.size());
-                    centres.push_back(centre);
-                  }
-                const ContactMapping<dim> other(
-                  faces_near(sides[1 - s], centres, pair.search_radius, comm),
-                  pair.search_radius);
-                double n = 0.;
-                for (unsigned int f = 0; f < centres.size(); ++f)
-                  if (other.find_image(centres[f]))
-                    {
-                      size[s] += sides[s][f].vertices[0].distance(
-                        sides[s][f].vertices.back());
-                      n += 1.;
-                    }
-                size[s] = Utilities::MPI::sum(size[s], comm);
-                n       = Utilities::MPI::sum(n, comm);
-                size[s] = (n > 0) ? size[s] / n : 1e300;
-              }
-            slave = (size[1] < size[0] * (1. - 1e-12)) ? 1 : 0;
-          }
-
-        // this rank's slave nodes, then the master faces near them
-        std::vector<Point<dim>>                               slave_points;
-        std::vector<std::array<types::global_dof_index, dim>> slave_dofs;
-        std::vector<types::global_dof_index>                  slave_scalar;
-        for_each_boundary_node(slave == 0 ? pair.first_side : pair.second_side,
-                               [&](const Point<dim> &x,
-                                   const auto       &dofs,
-                                   const auto        scalar_dof) {
-                                 slave_points.push_back(x);
-                                 slave_dofs.push_back(dofs);
-                                 slave_scalar.push_back(scalar_dof);
-                               });
-        const ContactMapping<dim> phi(
-          faces_near(sides[1 - slave], slave_points, pair.search_radius, comm),
-          pair.search_radius);
-        for (unsigned int n = 0; n < slave_points.size(); ++n)
-          {
-            const Point<dim> &x     = slave_points[n];
-            const auto        image = phi.find_image(x);
-            if (!image)
-              {
-                unmatched.push_back({x, slave_dofs[n], pair_index});
-                continue;
-              }
-            auto       projection = *image;
-            const bool inside     = (x - image->point) * image->master_normal <
-                                -1e-10 * pair.search_radius;
-            AssertThrow(parameters.project_initial_penetration || !inside,
-                        ExcMessage(
-                          "The initial configuration penetrates: the slave "
-                          "node at (" +
-                          Utilities::to_string(x[0]) + ", " +
-                          Utilities::to_string(x[1]) +
-                          ", ...) lies inside the master body by " +
-                          Utilities::to_string(image->gap) +
-                          " m. Correct the mesh, or set 'Contact "
-                          "solver/Initial penetration = project'."));
-            if (inside)
-              {
-                // a negative gap along the master's normal: the row asks
-                // for the node to be moved out
-                projection.normal = -image->master_normal;
-                projection.gap    = -image->gap;
-              }
-            ContactRow row = make_two_body_row<dim>(x,
-                                                    slave_dofs[n],
-                                                    projection,
-                                                    phi.faces()[image->face],
-                                                    fe.degree);
-            if (finish_row(row))
-              {
-                rows.rows.push_back(row);
-                row_scalar_dofs.push_back(slave_scalar[n]);
-              }
-          }
-        pcout << "   contact pair: slave is side " << slave + 1 << " ("
-              << n_faces[slave] << " faces), master side " << 2 - slave << " ("
-              << n_faces[1 - slave] << " faces)" << std::endl;
-        master_surfaces.push_back(sides[1 - slave]);
-      }
+      add_pair_rows(scene,
+                    pairs[pair_index],
+                    pair_index,
+                    system,
+                    mapping,
+                    w_ghosted,
+                    pcout);
 
     // the penetration check of the slave nodes without a row keeps this
     // rank's master faces, but only if there are such nodes
@@ -332,12 +131,10 @@ namespace dyncontact
     for (const auto &node : unmatched)
       ++n_unmatched_in_pair[node.pair];
     Utilities::MPI::sum(n_unmatched_in_pair, comm, n_unmatched_in_pair);
-    this->locally_owned = locally_owned;
-    locally_relevant    = system.locally_relevant_dofs();
     if (n_unmatched_nodes == 0)
       master_surfaces.clear();
 
-    row_operator.reinit(locally_owned, system.locally_relevant_dofs(), rows);
+    row_operator.reinit(locally_owned, locally_relevant, rows);
 
     double measure = 0.;
     for (const auto &row : rows.rows)
@@ -348,6 +145,246 @@ namespace dyncontact
     pcout << "   contact rows: " << n_global_row_count
           << ", measure of the slave contact boundary: " << measure
           << std::endl;
+  }
+
+
+
+  template <int dim>
+  std::vector<typename ContactSetup<dim>::BoundaryNode>
+  ContactSetup<dim>::boundary_nodes(
+    const SemiDiscreteSystem<dim>         &system,
+    const Mapping<dim>                    &mapping,
+    const std::vector<types::boundary_id> &ids) const
+  {
+    const auto &fe                 = system.get_fe();
+    const auto &scalar_fe          = system.get_scalar_fe();
+    const auto &scalar_dof_handler = system.get_scalar_dof_handler();
+    std::vector<BoundaryNode>            nodes;
+    std::set<types::global_dof_index>    seen;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> scalar_dofs(
+      scalar_fe.n_dofs_per_cell());
+    const auto &unit_points = scalar_fe.get_unit_support_points();
+    auto        scalar_cell = scalar_dof_handler.begin_active();
+    for (const auto &cell : system.get_dof_handler().active_cell_iterators())
+      {
+        if (cell->is_locally_owned())
+          for (const unsigned int face : cell->face_indices())
+            if (cell->face(face)->at_boundary() &&
+                std::find(ids.begin(),
+                          ids.end(),
+                          cell->face(face)->boundary_id()) != ids.end())
+              {
+                cell->get_dof_indices(dofs);
+                scalar_cell->get_dof_indices(scalar_dofs);
+                for (unsigned int node = 0; node < scalar_fe.n_dofs_per_cell();
+                     ++node)
+                  {
+                    if (!scalar_fe.has_support_on_face(node, face))
+                      continue;
+                    std::array<types::global_dof_index, dim> node_dofs;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      node_dofs[d] =
+                        dofs[fe.component_to_system_index(d, node)];
+                    if (!locally_owned.is_element(node_dofs[0]) ||
+                        seen.count(node_dofs[0]))
+                      continue;
+                    seen.insert(node_dofs[0]);
+                    nodes.push_back(
+                      {mapping.transform_unit_to_real_cell(cell,
+                                                           unit_points[node]),
+                       node_dofs,
+                       scalar_dofs[node]});
+                  }
+              }
+        ++scalar_cell;
+      }
+    return nodes;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::add_row(ContactRow                      &row,
+                             const types::global_dof_index    scalar_dof,
+                             const VectorType                &w_ghosted,
+                             const AffineConstraints<double> &constraints)
+  {
+    // the eliminated component: the free one with the largest |nu_i|; no
+    // row for a node without one (a hanging node, or a node fixed by
+    // Dirichlet data)
+    row.weight = w_ghosted(row.entries[0].first);
+    int best   = -1;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!constraints.is_constrained(row.entries[d].first) &&
+          std::abs(row.normal[d]) > 1e-12 &&
+          (best < 0 || std::abs(row.normal[d]) > std::abs(row.normal[best])))
+        best = d;
+    row.eliminated = std::max(best, 0);
+    if (best >= 0)
+      {
+        rows.rows.push_back(row);
+        row_scalar_dofs.push_back(scalar_dof);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::add_obstacle_rows(
+    const RigidObstacle<dim>        &obstacle,
+    const std::vector<BoundaryNode> &nodes,
+    const VectorType                &w_ghosted,
+    const AffineConstraints<double> &constraints)
+  {
+    // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
+    for (const BoundaryNode &node : nodes)
+      {
+        const Point<dim> &x = node.x;
+        ContactRow        row;
+        row.n_components = dim;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            row.entries.emplace_back(node.dofs[d], -obstacle.normal[d]);
+            row.normal[d]   = -obstacle.normal[d];
+            row.position[d] = x[d];
+          }
+        row.gap = (x - obstacle.point) * obstacle.normal;
+        AssertThrow(std::isfinite(row.gap),
+                    ExcMessage("The gap of the node at (" +
+                               Utilities::to_string(x[0]) + ", " +
+                               Utilities::to_string(x[1]) +
+                               ", ...) to the obstacle is not finite."));
+        AssertThrow(parameters.project_initial_penetration ||
+                      row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
+                    ExcMessage("The initial configuration penetrates the "
+                               "obstacle: the node at (" +
+                               Utilities::to_string(x[0]) + ", " +
+                               Utilities::to_string(x[1]) + ", ...) lies " +
+                               Utilities::to_string(-row.gap) +
+                               " m inside it. Correct the scene, or set "
+                               "'Contact solver/Initial penetration = "
+                               "project'."));
+        add_row(row, node.scalar_dof, w_ghosted, constraints);
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactSetup<dim>::finer_side(
+    const std::array<std::vector<MasterFace<dim>>, 2> &sides,
+    const double                                       search_radius) const
+  {
+    // compare the mean size of the faces that face the other side (their
+    // centre has an image on it), so that a coarse far field does not count
+    std::array<double, 2> size{{0., 0.}};
+    for (unsigned int s = 0; s < 2; ++s)
+      {
+        std::vector<Point<dim>> centres;
+        for (const auto &face : sides[s])
+          {
+            Point<dim> centre;
+            for (const auto &v : face.vertices)
+              centre += v / double(face.vertices.size());
+            centres.push_back(centre);
+          }
+        const ContactMapping<dim> other(
+          faces_near(sides[1 - s], centres, search_radius, comm),
+          search_radius);
+        double n = 0.;
+        for (unsigned int f = 0; f < centres.size(); ++f)
+          if (other.find_image(centres[f]))
+            {
+              size[s] +=
+                sides[s][f].vertices[0].distance(sides[s][f].vertices.back());
+              n += 1.;
+            }
+        size[s] = Utilities::MPI::sum(size[s], comm);
+        n       = Utilities::MPI::sum(n, comm);
+        size[s] = (n > 0) ? size[s] / n : 1e300;
+      }
+    return (size[1] < size[0] * (1. - 1e-12)) ? 1 : 0;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::add_pair_rows(const Scene<dim>              &scene,
+                                   const ContactPair             &pair,
+                                   const unsigned int             pair_index,
+                                   const SemiDiscreteSystem<dim> &system,
+                                   const Mapping<dim>            &mapping,
+                                   const VectorType              &w_ghosted,
+                                   const ConditionalOStream      &pcout)
+  {
+    // the mortar-like mapping phi_h onto the master faces near this rank's
+    // slave nodes (a parallel search: no rank holds the whole master
+    // surface)
+    const std::array<std::vector<MasterFace<dim>>, 2> sides = {
+      {local_faces(system, pair.first_side, scene.symmetry_boundary_ids()),
+       local_faces(system, pair.second_side, scene.symmetry_boundary_ids())}};
+    const std::array<types::global_dof_index, 2> n_faces = {
+      {Utilities::MPI::sum<types::global_dof_index>(sides[0].size(), comm),
+       Utilities::MPI::sum<types::global_dof_index>(sides[1].size(), comm)}};
+    const unsigned int slave = pair.slave_side < 0 ?
+                                 finer_side(sides, pair.search_radius) :
+                                 pair.slave_side;
+
+    // this rank's slave nodes, then the master faces near them
+    const std::vector<BoundaryNode> nodes =
+      boundary_nodes(system,
+                     mapping,
+                     slave == 0 ? pair.first_side : pair.second_side);
+    std::vector<Point<dim>> slave_points;
+    for (const BoundaryNode &node : nodes)
+      slave_points.push_back(node.x);
+    const ContactMapping<dim> phi(
+      faces_near(sides[1 - slave], slave_points, pair.search_radius, comm),
+      pair.search_radius);
+    for (const BoundaryNode &node : nodes)
+      {
+        const Point<dim> &x     = node.x;
+        const auto        image = phi.find_image(x);
+        if (!image)
+          {
+            unmatched.push_back({x, node.dofs, pair_index});
+            continue;
+          }
+        auto       projection = *image;
+        const bool inside     = (x - image->point) * image->master_normal <
+                            -1e-10 * pair.search_radius;
+        AssertThrow(parameters.project_initial_penetration || !inside,
+                    ExcMessage("The initial configuration penetrates: the "
+                               "slave node at (" +
+                               Utilities::to_string(x[0]) + ", " +
+                               Utilities::to_string(x[1]) +
+                               ", ...) lies inside the master body by " +
+                               Utilities::to_string(image->gap) +
+                               " m. Correct the mesh, or set 'Contact "
+                               "solver/Initial penetration = project'."));
+        if (inside)
+          {
+            // a negative gap along the master's normal: the row asks for
+            // the node to be moved out
+            projection.normal = -image->master_normal;
+            projection.gap    = -image->gap;
+          }
+        ContactRow row = make_two_body_row<dim>(x,
+                                                node.dofs,
+                                                projection,
+                                                phi.faces()[image->face],
+                                                system.get_fe().degree);
+        add_row(row, node.scalar_dof, w_ghosted, system.get_constraints());
+      }
+    pcout << "   contact pair: slave is side " << slave + 1 << " ("
+          << n_faces[slave] << " faces), master side " << 2 - slave << " ("
+          << n_faces[1 - slave] << " faces)" << std::endl;
+    master_surfaces.push_back(sides[1 - slave]);
   }
 
 

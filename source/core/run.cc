@@ -1,6 +1,6 @@
 #include <deal.II/base/parameter_handler.h>
 
-#include <dyncontact/core/parameters.h>
+#include <dyncontact/core/parameter_file.h>
 #include <dyncontact/core/run.h>
 #include <dyncontact/core/simulator.h>
 

@@ -1,11 +1,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/distributed/p4est_wrappers.h>
 
+#include <dyncontact/base/input_checks.h>
+#include <dyncontact/base/memory_check.h>
 #include <dyncontact/contact/contact_setup.h>
-#include <dyncontact/core/input_checks.h>
-#include <dyncontact/core/memory_check.h>
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
@@ -79,6 +78,7 @@ namespace dyncontact
     vtu_writer->initialize_simulator(*this);
     reference_states->initialize_simulator(*this);
     postprocessors->initialize_simulator(*this);
+    run_report.initialize_simulator(*this);
   }
 
 
@@ -93,43 +93,11 @@ namespace dyncontact
   Simulator<dim>::build_mesh()
   {
     TimerOutput::Scope t(*timer, "setup: mesh");
-    // refuse a mesh that would not fit into memory before allocating it
-    const unsigned int degree = system->get_fe().degree;
-    const std::string  remedy = "Mesh/Initial global refinements (now " +
-                               std::to_string(parameters.initial_refinements) +
-                               ") or the cell counts in " + scene->subsection();
-    const double coarse = scene->n_coarse_cells();
-    check_mesh_fits_in_memory(coarse *
-                                std::pow(2.,
-                                         dim * parameters.initial_refinements),
-                              dim,
-                              degree,
-                              coarse,
-                              remedy,
-                              comm);
-    scene->create_coarse_mesh(triangulation);
-    if (!checkpoints.resume())
-      {
-        for (unsigned int k = 0; k < parameters.initial_refinements; ++k)
-          {
-            check_mesh_fits_in_memory(triangulation.n_global_active_cells() *
-                                        std::pow(2., dim),
-                                      dim,
-                                      degree,
-                                      triangulation.n_cells(0),
-                                      remedy,
-                                      comm);
-            triangulation.refine_global(1);
-          }
-        scene->refine_initial_mesh(triangulation);
-      }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      AssertThrow(cell->material_id() < scene->n_bodies(),
-                  ExcMessage("A cell of the mesh has material id " +
-                             std::to_string(cell->material_id()) +
-                             ", but the scene has " +
-                             std::to_string(scene->n_bodies()) +
-                             " bodies (ids 0 to n-1)."));
+    dyncontact::build_mesh(*scene,
+                           triangulation,
+                           parameters.initial_refinements,
+                           system->get_fe().degree,
+                           checkpoints.resume());
   }
 
 
@@ -138,23 +106,6 @@ namespace dyncontact
   void
   Simulator<dim>::setup_discretization()
   {
-    // deal.II's cells must be p4est's leaves: where they are not (seen with
-    // deal.II 9.4 on a coarse mesh with rotated faces: deal.II kept eight
-    // children where p4est had coarsened them), every transfer of u, udot or
-    // a checkpoint pairs data with the wrong cells. Stop instead.
-    AssertThrow(
-      Utilities::MPI::logical_or(
-        triangulation.n_locally_owned_active_cells() !=
-          static_cast<unsigned int>(
-            triangulation.get_p4est()->local_num_quadrants),
-        comm) == false,
-      ExcMessage(
-        "the refined mesh is not the one p4est holds (deal.II and p4est "
-        "disagree on the refinement, as deal.II 9.4 did on coarse meshes "
-        "with rotated faces), so the solution cannot be transferred to it. "
-        "Change 'Mesh refinement/Coarsen fraction' or 'Mesh "
-        "refinement/Minimum level', or use a coarse mesh whose faces are in "
-        "standard orientation."));
     {
       TimerOutput::Scope t(*timer, "setup: DoFs and sparsity");
       system->setup(triangulation, *scene);
@@ -206,27 +157,11 @@ namespace dyncontact
   void
   Simulator<dim>::check_inertia()
   {
-    // in double precision, S = M + tau^2/4 A + tau/2 B keeps the mass only
-    // to about eps * max S_ii/M_ii: momentum and energy drift by that much
-    const double inertia_accuracy =
-      std::numeric_limits<double>::epsilon() * integrator->inertia_ratio();
-    if (inertia_accuracy > 1e-6 && !warned_inertia)
-      {
-        warned_inertia = true;
-        std::ostringstream text;
-        text << std::setprecision(3)
-             << "   warning: in the step matrix S = M + tau^2/4 A + tau/2 B "
-                "the stiffness and viscosity outweigh the mass by a factor "
-             << integrator->inertia_ratio()
-             << " (largest S_ii/M_ii), so in double precision S keeps the "
-                "mass only to a relative accuracy of about "
-             << inertia_accuracy
-             << ": momentum and energy are conserved only to about that "
-                "per step. Reduce 'Time integration/Time step' (the factor "
-                "grows as tau^2 E/(rho h^2) + tau mu_v/(rho h^2))."
-             << std::endl;
-        pcout << text.str();
-      }
+    if (warned_inertia)
+      return;
+    const std::string warning = integrator->inertia_warning();
+    warned_inertia            = !warning.empty();
+    pcout << warning;
   }
 
 
@@ -330,6 +265,8 @@ namespace dyncontact
                               contact->get_rows(),
                               flags,
                               controller_vectors);
+    vtu_writer->load(state);
+    mesh_transfer.load(state);
     make_integrator();
     integrator->load_active_sets(flags);
     if (time_step_controller.is_adaptive() &&
@@ -337,8 +274,6 @@ namespace dyncontact
       // those of the run before the checkpoint; make_integrator() above
       // built one more, which counts
       n_step_matrices = std::stoul(state.at("step_matrices_built"));
-    vtu_writer->load(state);
-    mesh_adaptor->load(state);
     open_outputs();
     pcout << "   resumed from " << dir << " at step " << control.get_step()
           << ", t = " << control.get_time() << " s" << std::endl;
@@ -352,22 +287,9 @@ namespace dyncontact
   {
     postprocessors->execute(*timer);
     TimerOutput::Scope t(*timer, "diagnostics");
-    // a statistic that is not finite stops the run (nan marks a step
-    // without a value in a sampled column)
-    const auto &statistics = postprocessors->get_statistics();
-    for (unsigned int c = 0; c < statistics.columns.size(); ++c)
-      AssertThrow(std::isfinite(statistics.rows.back()[c]) ||
-                    (postprocessors->is_sampled(c) &&
-                     std::isnan(statistics.rows.back()[c])),
-                  ExcMessage("step " + std::to_string(control.get_step()) +
-                             " (t = " + format_number(control.get_time()) +
-                             " s): the statistic '" + statistics.columns[c] +
-                             "' is " +
-                             format_number(statistics.rows.back()[c]) +
-                             ". Check the input for values far outside "
-                             "physical ranges (lengths, moduli, densities)."));
+    postprocessors->check_last_row();
     reference_states->write(control.get_time());
-    mesh_adaptor->start_new_row();
+    mesh_transfer = MeshTransfer();
   }
 
 
@@ -401,8 +323,7 @@ namespace dyncontact
       violation =
         integrator->restore_constraints(u, contact->get_row_operator());
     }
-    mesh_adaptor->record_transfer(system->total_energy(u, udot) - energy_before,
-                                  violation);
+    mesh_transfer.add(system->total_energy(u, udot) - energy_before, violation);
   }
 
 
@@ -425,7 +346,7 @@ namespace dyncontact
     triangulation.save(Checkpoints::mesh_file(dir));
     control.save(state);
     postprocessors->save(state);
-    mesh_adaptor->save(state);
+    mesh_transfer.save(state);
     vtu_writer->save(state);
     state["step_matrices_built"] = std::to_string(
       n_step_matrices + integrator->get_operators().n_step_matrices_built);
@@ -552,7 +473,7 @@ namespace dyncontact
       resume();
     else
       start();
-    print_banner();
+    pcout << run_report.banner() << std::endl;
     progress->start();
     loop_clock.restart();
 
@@ -560,7 +481,9 @@ namespace dyncontact
       {
         Timer      step_timer;
         const auto step = take_step();
-        control.advance(step.tau, step.tau_changed);
+        moments         = control.advance(step.tau, step.tau_changed);
+        moments.refinement =
+          mesh_adaptor->refinement_due(control.get_step()) && !moments.last;
         step_timer.stop();
         step_wall_time = step_timer.wall_time();
         record_statistics();
@@ -577,27 +500,20 @@ namespace dyncontact
           report.displacement_solve.iterations,
           report.displacement_solve.linear_iterations +
             report.projection_solve.linear_iterations);
-        // an output time passes whether or not VTU files are written: the
-        // sampled postprocessors (the error norm) wait for the next one
-        if (control.output_due())
-          {
-            if (vtu_writer->is_enabled())
-              vtu_writer->write(control.get_time());
-            control.output_written();
-          }
-        if (mesh_adaptor->refinement_due(control.get_step()) &&
-            control.keep_going())
+        if (moments.output && vtu_writer->is_enabled())
+          vtu_writer->write(control.get_time());
+        if (moments.refinement)
           refine_mesh();
-        if (control.checkpoint_due())
-          {
-            write_checkpoint();
-            control.checkpoint_written();
-          }
+        if (moments.checkpoint)
+          write_checkpoint();
       }
     if (!outputs_open)
       open_outputs();
     loop_clock.stop();
-    write_summary();
+    run_report.write_summary(
+      run_clock.wall_time(),
+      loop_clock.wall_time(),
+      n_step_matrices + integrator->get_operators().n_step_matrices_built);
   }
 
 

@@ -1,5 +1,6 @@
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/core/simulator_access.h>
+#include <dyncontact/postprocess/interface.h>
 
 namespace dyncontact
 {
@@ -71,6 +72,34 @@ namespace dyncontact
   SimulatorAccess<dim>::get_contact() const
   {
     return *simulator->contact;
+  }
+
+  template <int dim>
+  const TimeStepController &
+  SimulatorAccess<dim>::get_time_step_controller() const
+  {
+    return simulator->time_step_controller;
+  }
+
+  template <int dim>
+  const Statistics &
+  SimulatorAccess<dim>::get_statistics() const
+  {
+    return simulator->postprocessors->get_statistics();
+  }
+
+  template <int dim>
+  const StepMoments &
+  SimulatorAccess<dim>::get_moments() const
+  {
+    return simulator->moments;
+  }
+
+  template <int dim>
+  const MeshTransfer &
+  SimulatorAccess<dim>::get_mesh_transfer() const
+  {
+    return simulator->mesh_transfer;
   }
 
   template <int dim>

@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/distributed/p4est_wrappers.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -21,122 +22,6 @@
 
 namespace dyncontact
 {
-  namespace
-  {
-    /// The displacement component and the scalar FE_Q shape function of
-    /// each shape function of FE_Q<dim>^dim.
-    template <int dim>
-    std::pair<std::vector<unsigned int>, std::vector<unsigned int>>
-    components_and_nodes(const FESystem<dim> &fe)
-    {
-      std::vector<unsigned int> component(fe.n_dofs_per_cell()),
-        node(fe.n_dofs_per_cell());
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        {
-          component[i] = fe.system_to_component_index(i).first;
-          node[i]      = fe.system_to_component_index(i).second;
-        }
-      return {component, node};
-    }
-
-
-
-    /**
-     * Adds element matrices into a Trilinos matrix whose sparsity pattern
-     * holds them. A locally owned row goes straight into Epetra's row (its
-     * column indices are local, and sorted once the pattern is complete:
-     * one merge with the element's sorted columns finds every entry),
-     * instead of deal.II's add(), which has Epetra look up every entry's
-     * global column (3D bar at 1e6 DoFs: 1.5 s of the step matrix's
-     * assembly). Other rows, an entry the merge does not find, and a
-     * matrix whose pattern is not complete go through deal.II's add().
-     */
-    class ElementMatrixAdder
-    {
-    public:
-      explicit ElementMatrixAdder(MatrixType &matrix)
-        : matrix(matrix)
-        , epetra(const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix()))
-        , direct(epetra.Filled() && epetra.IndicesAreLocal())
-      {}
-
-      void
-      add(const std::vector<types::global_dof_index> &dofs,
-          const FullMatrix<double>                   &element_matrix)
-      {
-        const unsigned int n = dofs.size();
-        if (!direct)
-          {
-            matrix.add(dofs, element_matrix);
-            return;
-          }
-        rows.resize(n);
-        columns.resize(n);
-        order.resize(n);
-        positions.assign(n, std::numeric_limits<int>::max());
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            const auto gid =
-              static_cast<TrilinosWrappers::types::int_type>(dofs[j]);
-            rows[j]    = epetra.RowMap().LID(gid);
-            columns[j] = epetra.ColMap().LID(gid);
-            order[j]   = j;
-          }
-        std::sort(order.begin(),
-                  order.end(),
-                  [this](const unsigned int a, const unsigned int b) {
-                    return columns[a] < columns[b];
-                  });
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            if (rows[i] < 0)
-              {
-                // not owned here: Epetra keeps it for the owner until
-                // compress()
-                matrix.add(dofs[i], n, dofs.data(), &element_matrix(i, 0));
-                continue;
-              }
-            int     length  = 0;
-            double *values  = nullptr;
-            int    *indices = nullptr;
-            epetra.ExtractMyRowView(rows[i], length, values, indices);
-            // Each entry is first looked for where the row before had it:
-            // the rows of one node's components have the same columns. Else
-            // a binary search from the entry before finds it (the
-            // element's columns come in runs of neighbours in the row).
-            const int *q = indices, *const end = indices + length;
-            for (const unsigned int j : order)
-              {
-                const int p = positions[j];
-                if (p < length && indices[p] == columns[j])
-                  {
-                    values[p] += element_matrix(i, j);
-                    q = indices + p + 1;
-                    continue;
-                  }
-                if (q == end || *q != columns[j])
-                  q = std::lower_bound(q, end, columns[j]);
-                if (q != end && *q == columns[j])
-                  {
-                    positions[j] = q - indices;
-                    values[q++ - indices] += element_matrix(i, j);
-                  }
-                else
-                  matrix.add(dofs[i], dofs[j], element_matrix(i, j));
-              }
-          }
-      }
-
-    private:
-      MatrixType               &matrix;
-      Epetra_CrsMatrix         &epetra;
-      const bool                direct;
-      std::vector<int>          rows, columns;
-      std::vector<unsigned int> order;
-      /// where each column of the element was found in the row before
-      std::vector<int> positions;
-    };
-  } // namespace
 
 
   template <int dim>
@@ -195,6 +80,23 @@ namespace dyncontact
     const parallel::distributed::Triangulation<dim> &triangulation,
     const Scene<dim>                                &scene)
   {
+    // deal.II's cells must be p4est's leaves: where they are not (seen with
+    // deal.II 9.4 on a coarse mesh with rotated faces: deal.II kept eight
+    // children where p4est had coarsened them), every transfer of u, udot or
+    // a checkpoint pairs data with the wrong cells. Stop instead.
+    AssertThrow(
+      Utilities::MPI::logical_or(
+        triangulation.n_locally_owned_active_cells() !=
+          static_cast<unsigned int>(
+            triangulation.get_p4est()->local_num_quadrants),
+        comm) == false,
+      ExcMessage(
+        "the refined mesh is not the one p4est holds (deal.II and p4est "
+        "disagree on the refinement, as deal.II 9.4 did on coarse meshes "
+        "with rotated faces), so the solution cannot be transferred to it. "
+        "Change 'Mesh refinement/Coarsen fraction' or 'Mesh "
+        "refinement/Minimum level', or use a coarse mesh whose faces are in "
+        "standard orientation."));
     if (!attached)
       {
         // attached only now, after the scene has built and refined its
@@ -212,24 +114,7 @@ namespace dyncontact
     DoFTools::extract_locally_relevant_dofs(scalar_dof_handler,
                                             scalar_locally_relevant);
 
-    // hanging nodes and homogeneous Dirichlet data
-    constraints.clear();
-    constraints.reinit(locally_relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const auto &boundary : scene.dirichlet_boundaries())
-      {
-        std::vector<bool> components(dim);
-        for (unsigned int d = 0; d < dim; ++d)
-          components[d] = boundary.components[d];
-        VectorTools::interpolate_boundary_values(mapping,
-                                                 dof_handler,
-                                                 boundary.id,
-                                                 Functions::ZeroFunction<dim>(
-                                                   dim),
-                                                 constraints,
-                                                 ComponentMask(components));
-      }
-    constraints.close();
+    make_constraints(scene);
     // M, A, B share the sparsity pattern of the unconstrained operator;
     // constraints are applied by the active-set solver, not by assembly
     make_sparsity_graph();
@@ -249,13 +134,48 @@ namespace dyncontact
 
     load.reinit(locally_owned, comm);
     boundary_weights.reinit(locally_owned, comm);
+    index_owned_nodes(scene.n_bodies());
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::make_constraints(const Scene<dim> &scene)
+  {
+    // hanging nodes and homogeneous Dirichlet data
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const auto &boundary : scene.dirichlet_boundaries())
+      {
+        std::vector<bool> components(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          components[d] = boundary.components[d];
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
+                                                 boundary.id,
+                                                 Functions::ZeroFunction<dim>(
+                                                   dim),
+                                                 constraints,
+                                                 ComponentMask(components));
+      }
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::index_owned_nodes(const unsigned int n_bodies)
+  {
     // one pass over the locally owned cells: for each locally owned node its
     // component-0 DoF and scalar DoF, and for each locally owned DoF its
     // slot body * dim + component (the momentum's sums)
     owned_system0_to_scalar.clear();
     constexpr unsigned char unset = std::numeric_limits<unsigned char>::max();
     owned_dof_slots.assign(locally_owned.n_elements(), unset);
-    n_owned_body_dofs.assign(scene.n_bodies(), 0);
+    n_owned_body_dofs.assign(n_bodies, 0);
     {
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       std::vector<types::global_dof_index> scalar_dofs(
@@ -440,350 +360,6 @@ namespace dyncontact
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::assemble(const Scene<dim> &scene)
-  {
-    auto       tractions   = scene.neumann_tractions();
-    const auto contact_ids = scene.all_contact_boundary_ids();
-
-    const QGauss<dim> quadrature(fe.degree + 1);
-    // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes the
-    // element mass matrix of FE_Q diagonal
-    const Quadrature<dim> mass_quadrature =
-      parameters.lumped_mass ?
-        Quadrature<dim>(QGaussLobatto<dim>(fe.degree + 1)) :
-        Quadrature<dim>(QGauss<dim>(fe.degree + 1));
-    const QGauss<dim - 1>        face_quadrature(fe.degree + 1);
-    const QGaussLobatto<dim - 1> lumped_face_quadrature(fe.degree + 1);
-
-    // loads given as total forces: spread over the boundary as the mesh
-    // represents it, so that they sum to the force exactly
-    if (const auto forces = scene.neumann_forces(); !forces.empty())
-      {
-        FEFaceValues<dim>   area_values(mapping,
-                                      fe,
-                                      face_quadrature,
-                                      update_JxW_values);
-        std::vector<double> areas(forces.size(), 0.);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary())
-                for (unsigned int k = 0; k < forces.size(); ++k)
-                  if (cell->face(f)->boundary_id() == forces[k].first)
-                    {
-                      area_values.reinit(cell, f);
-                      for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                        areas[k] += area_values.JxW(q);
-                    }
-        Utilities::MPI::sum(areas, comm, areas);
-        for (unsigned int k = 0; k < forces.size(); ++k)
-          {
-            AssertThrow(areas[k] > 0.,
-                        ExcMessage("The scene loads boundary id " +
-                                   std::to_string(forces[k].first) +
-                                   " with a force, but no boundary face of "
-                                   "the mesh has that id."));
-            tractions.emplace_back(forces[k].first,
-                                   forces[k].second / areas[k]);
-          }
-      }
-
-    FEValues<dim>     fe_values(mapping,
-                            scalar_fe,
-                            quadrature,
-                            update_values | update_JxW_values);
-    FEValues<dim>     mass_values(mapping,
-                              scalar_fe,
-                              mass_quadrature,
-                              update_values | update_JxW_values);
-    FEFaceValues<dim> face_values(mapping,
-                                  scalar_fe,
-                                  face_quadrature,
-                                  update_values | update_JxW_values);
-    FEFaceValues<dim> lumped_face_values(mapping,
-                                         scalar_fe,
-                                         lumped_face_quadrature,
-                                         update_values | update_JxW_values);
-
-    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
-    const unsigned int  n_nodes       = scalar_fe.n_dofs_per_cell();
-    std::vector<double> bad_cell; // centre and body of an inverted cell
-    FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell);
-    Vector<double>      cell_lumped_mass(dofs_per_cell);
-    Vector<double>      cell_load(dofs_per_cell);
-    Vector<double>      cell_boundary_weights(dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-
-    // component and scalar shape function of each shape function
-    const auto [component, node] = components_and_nodes(fe);
-    // the scalar mass int phi_k phi_l and load int phi_k
-    std::vector<double> scalar_mass(n_nodes * n_nodes);
-    std::vector<double> scalar_load(n_nodes);
-
-    materials.clear();
-    std::unique_ptr<ElementMatrixAdder> mass_adder;
-    if (!parameters.lumped_mass)
-      mass_adder = std::make_unique<ElementMatrixAdder>(mass_matrix);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell_mass             = 0.;
-          cell_load             = 0.;
-          cell_boundary_weights = 0.;
-          const Material &material =
-            materials
-              .emplace(cell->material_id(), scene.material(cell->material_id()))
-              .first->second;
-          const double rho        = material.density;
-          const auto   body_force = scene.body_force(cell->material_id());
-          const typename Triangulation<dim>::cell_iterator tria_cell(cell);
-          fe_values.reinit(tria_cell);
-          mass_values.reinit(tria_cell);
-          // an inverted or twisted cell (which deal.II does not reject on
-          // reading) has a non-positive Jacobian somewhere
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            if (!(fe_values.JxW(q) > 0.) && bad_cell.empty())
-              {
-                for (unsigned int d = 0; d < dim; ++d)
-                  bad_cell.push_back(cell->center()[d]);
-                bad_cell.push_back(cell->material_id() + 1);
-              }
-
-          std::fill(scalar_load.begin(), scalar_load.end(), 0.);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            for (unsigned int k = 0; k < n_nodes; ++k)
-              scalar_load[k] += fe_values.shape_value(k, q) * fe_values.JxW(q);
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            cell_load(i) = scalar_load[node[i]] * body_force[component[i]];
-
-          // (lumped: the element matrix is diagonal, only its diagonal is
-          // computed)
-          std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
-          for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
-            for (unsigned int k = 0; k < n_nodes; ++k)
-              for (unsigned int l = (parameters.lumped_mass ? k : 0);
-                   l < (parameters.lumped_mass ? k + 1 : n_nodes);
-                   ++l)
-                scalar_mass[k * n_nodes + l] +=
-                  rho * mass_values.shape_value(k, q) *
-                  mass_values.shape_value(l, q) * mass_values.JxW(q);
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            for (unsigned int j = (parameters.lumped_mass ? i : 0);
-                 j < (parameters.lumped_mass ? i + 1 : dofs_per_cell);
-                 ++j)
-              if (component[i] == component[j])
-                cell_mass(i, j) = scalar_mass[node[i] * n_nodes + node[j]];
-
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
-              {
-                const auto id = cell->face(f)->boundary_id();
-                for (const auto &[traction_id, traction] : tractions)
-                  if (traction_id == id)
-                    {
-                      face_values.reinit(tria_cell, f);
-                      for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                          cell_load(i) += face_values.shape_value(node[i], q) *
-                                          traction[component[i]] *
-                                          face_values.JxW(q);
-                    }
-                if (std::find(contact_ids.begin(), contact_ids.end(), id) !=
-                    contact_ids.end())
-                  {
-                    // w_p = int psi_p ds, by nodal quadrature (positive)
-                    lumped_face_values.reinit(tria_cell, f);
-                    for (unsigned int q = 0; q < lumped_face_quadrature.size();
-                         ++q)
-                      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                        cell_boundary_weights(i) +=
-                          lumped_face_values.shape_value(node[i], q) *
-                          lumped_face_values.JxW(q);
-                  }
-              }
-
-          cell->get_dof_indices(dof_indices);
-          if (parameters.lumped_mass)
-            {
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_lumped_mass(i) = cell_mass(i, i);
-              lumped_mass_diagonal.add(dof_indices, cell_lumped_mass);
-            }
-          else
-            mass_adder->add(dof_indices, cell_mass);
-          load.add(dof_indices, cell_load);
-          boundary_weights.add(dof_indices, cell_boundary_weights);
-        }
-
-    if (parameters.lumped_mass)
-      lumped_mass_diagonal.compress(VectorOperation::add);
-    else
-      mass_matrix.compress(VectorOperation::add);
-    for (const auto &rank_bad : Utilities::MPI::all_gather(comm, bad_cell))
-      if (!rank_bad.empty())
-        {
-          std::ostringstream where;
-          where << "(" << rank_bad[0];
-          for (unsigned int d = 1; d < dim; ++d)
-            where << ", " << rank_bad[d];
-          where << ")";
-          AssertThrow(false,
-                      ExcMessage("The mesh has an inverted or twisted cell "
-                                 "(non-positive Jacobian) at " +
-                                 where.str() + " in body " +
-                                 std::to_string(int(rank_bad[dim])) +
-                                 "; check the mesh (file) and the order of "
-                                 "the cell's vertices."));
-        }
-    load.compress(VectorOperation::add);
-    boundary_weights.compress(VectorOperation::add);
-
-    elastic_operator.reinit(mapping, dof_handler, materials);
-    stiffness_product.reinit(
-      [this](VectorType &y, const VectorType &x) { stiffness_vmult(y, x); });
-  }
-
-
-
-  template <int dim>
-  void
-  SemiDiscreteSystem<dim>::assemble_stiffness_matrix(MatrixType  &matrix,
-                                                     const double a,
-                                                     const double b,
-                                                     const double m) const
-  {
-    reinit_matrix(matrix);
-    // a lumped m M goes onto the diagonal in the first cell of each owned
-    // row (a locally owned DoF lies on a locally owned cell)
-    const bool lumped_mass_in_cells = (m != 0. && parameters.lumped_mass);
-    std::vector<bool> mass_added(
-      lumped_mass_in_cells ? locally_owned.n_elements() : 0, false);
-    // Every shape function of FE_Q<dim>^dim is a scalar shape function
-    // phi_k of FE_Q times a unit vector e_c, so the element matrices follow
-    // from the scalar gradients (a third of the work of the vector
-    // element's FEValues): with H^ab_kl = int d_a phi_k d_b phi_l,
-    //   2 mu eps(phi_k e_c) : eps(phi_l e_d) = mu (delta_cd sum_a H^aa_kl
-    //                                              + H^dc_kl),
-    //   div(phi_k e_c) div(phi_l e_d)        = H^cd_kl.
-    const QGauss<dim>  quadrature(fe.degree + 1);
-    FEValues<dim>      fe_values(mapping,
-                            scalar_fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    const unsigned int n_nodes       = scalar_fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    const auto [component, node] = components_and_nodes(fe);
-    // H^ab_kl at [(a * dim + b) * n_nodes * n_nodes + k * n_nodes + l]
-    std::vector<double> gradient_products(dim * dim * n_nodes * n_nodes);
-    std::vector<double> laplace(n_nodes * n_nodes);
-    std::vector<Tensor<1, dim>> gradients(n_nodes);
-
-    // H and the scalar Laplacian sum_c H^cc_kl of the cell in fe_values
-    const auto compute_products = [&]() {
-      std::fill(gradient_products.begin(), gradient_products.end(), 0.);
-      for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          const double JxW = fe_values.JxW(q);
-          for (unsigned int k = 0; k < n_nodes; ++k)
-            gradients[k] = fe_values.shape_grad(k, q);
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                double *H =
-                  &gradient_products[(c * dim + d) * n_nodes * n_nodes];
-                for (unsigned int k = 0; k < n_nodes; ++k)
-                  {
-                    const double left = gradients[k][c] * JxW;
-                    for (unsigned int l = 0; l < n_nodes; ++l)
-                      H[k * n_nodes + l] += left * gradients[l][d];
-                  }
-              }
-        }
-      std::fill(laplace.begin(), laplace.end(), 0.);
-      for (unsigned int c = 0; c < dim; ++c)
-        for (unsigned int kl = 0; kl < n_nodes * n_nodes; ++kl)
-          laplace[kl] +=
-            gradient_products[(c * dim + c) * n_nodes * n_nodes + kl];
-    };
-    bool have_products = false;
-    // the element matrix a A + b B of the cell before, and its moduli
-    FullMatrix<double> element_matrix(dofs_per_cell, dofs_per_cell);
-    double             element_mu = 0., element_lambda = 0.;
-    ElementMatrixAdder adder(matrix);
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const Material &material = materials.at(cell->material_id());
-          // the moduli of a A + b B
-          const double mu = a * material.mu() +
-                            (b != 0. ? b * material.viscous_shear_modulus : 0.);
-          const double lambda = a * material.lambda() +
-                                (b != 0. ? b * material.viscous_lambda : 0.);
-          fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
-
-          // a translation of the cell before has the same H (deal.II's
-          // FEValues recognises it on a mapping of degree 1), and with the
-          // same moduli the same element matrix
-          const bool same_products =
-            have_products &&
-            fe_values.get_cell_similarity() == CellSimilarity::translation;
-          if (!same_products)
-            compute_products();
-          if (!same_products || mu != element_mu || lambda != element_lambda)
-            {
-              const auto H = [&](const unsigned int c,
-                                 const unsigned int d,
-                                 const unsigned int k,
-                                 const unsigned int l) {
-                return gradient_products[(c * dim + d) * n_nodes * n_nodes +
-                                         k * n_nodes + l];
-              };
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const unsigned int c = component[i], k = node[i];
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    {
-                      const unsigned int d = component[j], l = node[j];
-                      const double       shear =
-                        (c == d ? laplace[k * n_nodes + l] : 0.) +
-                        H(d, c, k, l);
-                      element_matrix(i, j) =
-                        mu * shear + lambda * H(c, d, k, l);
-                    }
-                }
-              element_mu     = mu;
-              element_lambda = lambda;
-            }
-          have_products = true;
-          cell_matrix   = element_matrix;
-          cell->get_dof_indices(dof_indices);
-          if (lumped_mass_in_cells)
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              if (locally_owned.is_element(dof_indices[i]))
-                {
-                  const auto row =
-                    locally_owned.index_within_set(dof_indices[i]);
-                  if (!mass_added[row])
-                    {
-                      cell_matrix(i, i) +=
-                        m * lumped_mass_diagonal(dof_indices[i]);
-                      mass_added[row] = true;
-                    }
-                }
-          adder.add(dof_indices, cell_matrix);
-        }
-    matrix.compress(VectorOperation::add);
-    if (m != 0. && !parameters.lumped_mass)
-      matrix.add(m, mass_matrix);
-  }
-
-
-
-  template <int dim>
-  void
   SemiDiscreteSystem<dim>::interpolate_initial_values(const Scene<dim> &scene,
                                                       VectorType       &u,
                                                       VectorType &udot) const
@@ -831,6 +407,17 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::reinit_vector(VectorType &v) const
   {
     v.reinit(locally_owned, comm);
+  }
+
+
+
+  template <int dim>
+  VectorType
+  SemiDiscreteSystem<dim>::ghosted(const VectorType &v) const
+  {
+    VectorType result(locally_owned, locally_relevant, comm);
+    result = v;
+    return result;
   }
 
 
@@ -957,85 +544,6 @@ namespace dyncontact
   }
 
 
-
-  void
-  CachedProduct::reinit(const Product &product)
-  {
-    this->product = product;
-    valid         = false;
-  }
-
-
-
-  const VectorType &
-  CachedProduct::vmult(const VectorType &x) const
-  {
-    Assert(product, ExcInternalError());
-    bool hit = valid &&
-               x_last.locally_owned_elements() == x.locally_owned_elements() &&
-               std::memcmp(x_last.begin(),
-                           x.begin(),
-                           x.locally_owned_size() * sizeof(double)) == 0;
-    hit = (Utilities::MPI::min(hit ? 1 : 0, x.get_mpi_communicator()) == 1);
-    if (!hit)
-      {
-        x_last = x;
-        y_last.reinit(x, true);
-        product(y_last, x);
-        valid = true;
-      }
-    return y_last;
-  }
-
-
-
-  void
-  SystemMatrices::mass_vmult(VectorType &y, const VectorType &x) const
-  {
-    if (M != nullptr)
-      {
-        y.reinit(x, true);
-        M->vmult(y, x);
-      }
-    else
-      {
-        y = x;
-        y.scale(*M_lumped);
-      }
-  }
-
-
-
-  double
-  SystemMatrices::mass_linfty_norm() const
-  {
-    return M != nullptr ? M->linfty_norm() : M_lumped->linfty_norm();
-  }
-
-
-
-  void
-  SystemMatrices::add_mass(MatrixType &matrix, const double factor) const
-  {
-    if (M != nullptr)
-      {
-        matrix.add(factor, *M);
-        return;
-      }
-    // the diagonal of the Epetra matrix, changed in place (deal.II's wrapper
-    // gives only a const view of the matrix it owns)
-    auto &epetra = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
-    Epetra_Vector diagonal(epetra.RowMap());
-    int           error = epetra.ExtractDiagonalCopy(diagonal);
-    if (error == 0)
-      error = diagonal.Update(factor, M_lumped->trilinos_vector(), 1.);
-    if (error == 0)
-      error = epetra.ReplaceDiagonalValues(diagonal);
-    AssertThrow(error == 0,
-                ExcMessage("adding the lumped mass to a matrix's diagonal "
-                           "failed (Epetra error " +
-                           std::to_string(error) + ")"));
-  }
 
   template <int dim>
   std::vector<VectorType>

@@ -18,12 +18,9 @@ namespace dyncontact
                          const VectorType           &field,
                          Vector<float>              &indicators)
     {
-      const SemiDiscreteSystem<dim> &system = access.get_system();
-      VectorType                     ghosted(system.locally_owned_dofs(),
-                         system.locally_relevant_dofs(),
-                         access.get_mpi_communicator());
-      ghosted = field;
-      Vector<float> kelly(indicators.size());
+      const SemiDiscreteSystem<dim> &system  = access.get_system();
+      const VectorType               ghosted = system.ghosted(field);
+      Vector<float>                  kelly(indicators.size());
       KellyErrorEstimator<dim>::estimate(access.get_mapping(),
                                          system.get_dof_handler(),
                                          QGauss<dim - 1>(

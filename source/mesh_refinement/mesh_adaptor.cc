@@ -158,50 +158,6 @@ namespace dyncontact
 
 
 
-  template <int dim>
-  void
-  MeshAdaptor<dim>::record_transfer(const double energy_change,
-                                    const double penetration)
-  {
-    energy_transfer += energy_change;
-    transfer_penetration = std::max(transfer_penetration, penetration);
-  }
-
-
-
-  template <int dim>
-  void
-  MeshAdaptor<dim>::start_new_row()
-  {
-    energy_transfer      = 0.;
-    transfer_penetration = 0.;
-  }
-
-
-
-  template <int dim>
-  void
-  MeshAdaptor<dim>::save(std::map<std::string, std::string> &state) const
-  {
-    std::ostringstream s;
-    s << std::setprecision(17) << energy_transfer << " "
-      << transfer_penetration;
-    state["mesh_transfer"] = s.str();
-  }
-
-
-
-  template <int dim>
-  void
-  MeshAdaptor<dim>::load(const std::map<std::string, std::string> &state)
-  {
-    std::istringstream s(state.at("mesh_transfer"));
-    std::string        energy, penetration;
-    s >> energy >> penetration;
-    energy_transfer      = std::stod(energy);
-    transfer_penetration = std::stod(penetration);
-  }
-
   template class MeshAdaptor<2>;
   template class MeshAdaptor<3>;
 } // namespace dyncontact

@@ -1,8 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <boost/crc.hpp>
-
+#include <dyncontact/base/checksum.h>
 #include <dyncontact/output/checkpoint.h>
 
 #include <cstdio>
@@ -125,10 +124,9 @@ namespace dyncontact
                   << entry.file_size() << " "
                   << checksum_of_file(entry.path().string()) << "\n";
         text << "files " << files.str().size() << "\n" << files.str() << "\n";
-        boost::crc_32_type crc;
-        crc.process_bytes(text.str().data(), text.str().size());
         std::ofstream out(dir + "/state.txt");
-        out << text.str() << "checksum " << std::hex << crc.checksum() << "\n";
+        out << text.str() << "checksum " << checksum_of_text(text.str())
+            << "\n";
         out.close();
         AssertThrow(out.good(),
                     ExcMessage("Cannot write the checkpoint '" + dir + "'."));
@@ -230,24 +228,6 @@ namespace dyncontact
 
 
   std::string
-  Checkpoints::checksum_of_file(const std::string &name)
-  {
-    boost::crc_32_type crc;
-    std::ifstream      in(name, std::ios::binary);
-    std::vector<char>  buffer(1 << 20);
-    while (in)
-      {
-        in.read(buffer.data(), buffer.size());
-        crc.process_bytes(buffer.data(), in.gcount());
-      }
-    std::ostringstream s;
-    s << std::hex << crc.checksum();
-    return s.str();
-  }
-
-
-
-  std::string
   Checkpoints::verify(const std::string &dir)
   {
     const std::string state_file = dir + "/state.txt";
@@ -265,11 +245,8 @@ namespace dyncontact
     if (last == std::string::npos || text.back() != '\n' ||
         (last > 0 && text[last - 1] != '\n'))
       return "state.txt is truncated (its checksum line is missing)";
-    boost::crc_32_type crc;
-    crc.process_bytes(text.data(), last);
-    std::ostringstream expected;
-    expected << "checksum " << std::hex << crc.checksum() << "\n";
-    if (text.substr(last) != expected.str())
+    if (text.substr(last) !=
+        "checksum " + checksum_of_text(text.substr(0, last)) + "\n")
       return "state.txt is damaged (its checksum does not match)";
 
     // the listed files: present, of their size and checksum

@@ -3,8 +3,8 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <dyncontact/base/global_parameters.h>
 #include <dyncontact/contact/contact_setup.h>
-#include <dyncontact/core/parameters.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/time_stepping/row_force.h>
@@ -122,12 +122,8 @@ namespace dyncontact
     const auto &scalar_locally_relevant = system.scalar_locally_relevant_dofs();
     const auto &triangulation           = this->get_triangulation();
 
-    VectorType u_ghosted(system.locally_owned_dofs(),
-                         system.locally_relevant_dofs(),
-                         comm);
-    VectorType v_ghosted(u_ghosted);
-    u_ghosted = this->get_solution();
-    v_ghosted = this->get_velocity();
+    const VectorType u_ghosted = system.ghosted(this->get_solution());
+    const VectorType v_ghosted = system.ghosted(this->get_velocity());
 
     // nodal contact fields on the scalar FE_Q: pressure on both sides (the
     // master side gets each row's force through the weights N_j of its

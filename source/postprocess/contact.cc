@@ -7,10 +7,10 @@
 // (a search radius too small) cannot report 0. Such a node gets a warning.
 
 #include <dyncontact/contact/contact_setup.h>
-#include <dyncontact/core/simulation_control.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/row_force.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <algorithm>
 #include <iomanip>

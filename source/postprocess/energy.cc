@@ -12,11 +12,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <dyncontact/core/simulation_control.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
-#include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -41,14 +41,6 @@ namespace dyncontact
       }
 
       void
-      parse_parameters(ParameterHandler &prm) override
-      {
-        ActiveSetSolver::Parameters solver;
-        solver.parse_parameters(prm);
-        tolerance = solver.energy_tolerance();
-      }
-
-      void
       execute(std::vector<double> &row) override
       {
         const SemiDiscreteSystem<dim> &system = this->get_system();
@@ -68,9 +60,13 @@ namespace dyncontact
         if (step == 0)
           initial = total;
         else
-          transfers += this->get_mesh_adaptor().get_energy_transfer();
+          transfers += this->get_mesh_transfer().energy_change;
         const double balance = total - initial - transfers;
         scale = std::max(scale, kinetic + std::abs(elastic) + dissipation);
+        const double tolerance = this->get_integrator()
+                                   .get_operators()
+                                   .get_solver_parameters()
+                                   .energy_tolerance();
         if (step > 0 && !this->get_integrator().get_scheme().is_static &&
             balance - previous_balance > tolerance * scale)
           {
@@ -126,7 +122,6 @@ namespace dyncontact
 
     private:
       double       dissipation      = 0.;
-      double       tolerance        = 1e-9;
       double       initial          = 0.;
       double       transfers        = 0.;
       double       scale            = 0.;

@@ -5,10 +5,10 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <dyncontact/core/simulation_control.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <cmath>
 
@@ -71,7 +71,7 @@ namespace dyncontact
       due() const override
       {
         return every_step || this->get_control().get_step() == 0 ||
-               this->get_control().output_due();
+               this->get_moments().output;
       }
 
       bool
@@ -97,12 +97,8 @@ namespace dyncontact
                                 quadrature,
                                 update_values | update_gradients |
                                   update_quadrature_points | update_JxW_values);
-        VectorType           u_ghosted(system.locally_owned_dofs(),
-                             system.locally_relevant_dofs(),
-                             comm);
-        VectorType           v_ghosted(u_ghosted);
-        u_ghosted = this->get_solution();
-        v_ghosted = this->get_velocity();
+        const VectorType     u_ghosted = system.ghosted(this->get_solution());
+        const VectorType     v_ghosted = system.ghosted(this->get_velocity());
 
         const FEValuesExtractors::Vector displacement(0);
         std::vector<Tensor<1, dim>>      vh(quadrature.size());

@@ -1,8 +1,9 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/base/input_checks.h>
 #include <dyncontact/postprocess/interface.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <iomanip>
 #include <limits>
@@ -115,6 +116,24 @@ namespace dyncontact
           statistics.write_row(file, row);
           file.flush();
         }
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::check_last_row() const
+    {
+      const std::vector<double> &row = statistics.rows.back();
+      for (unsigned int c = 0; c < statistics.columns.size(); ++c)
+        AssertThrow(
+          std::isfinite(row[c]) || (is_sampled(c) && std::isnan(row[c])),
+          ExcMessage("step " + std::to_string(this->get_control().get_step()) +
+                     " (t = " + format_number(this->get_control().get_time()) +
+                     " s): the statistic '" + statistics.columns[c] + "' is " +
+                     format_number(row[c]) +
+                     ". Check the input for values far outside physical "
+                     "ranges (lengths, moduli, densities)."));
     }
 
 

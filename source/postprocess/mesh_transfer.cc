@@ -4,6 +4,7 @@
 // from what a mesh change does.
 
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/postprocess/interface.h>
 
 namespace dyncontact
@@ -30,8 +31,8 @@ namespace dyncontact
       execute(std::vector<double> &row) override
       {
         row.insert(row.end(),
-                   {this->get_mesh_adaptor().get_energy_transfer(),
-                    this->get_mesh_adaptor().get_transfer_penetration()});
+                   {this->get_mesh_transfer().energy_change,
+                    this->get_mesh_transfer().penetration});
       }
     };
 

@@ -19,10 +19,10 @@
 #include <deal.II/base/mpi.h>
 
 #include <dyncontact/contact/contact_setup.h>
-#include <dyncontact/core/simulation_control.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/row_force.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // The error in the physical energy norm against the states of a reference
 // run (same mesh, smaller tau) at the reference times, NaN in between.
 
-#include <dyncontact/core/simulation_control.h>
 #include <dyncontact/output/reference_states.h>
 #include <dyncontact/postprocess/interface.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 namespace dyncontact
 {

@@ -3,7 +3,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
-#include <dyncontact/output/checkpoint.h>
+#include <dyncontact/base/checksum.h>
 #include <dyncontact/scenes/gmsh_scene.h>
 #include <dyncontact/scenes/msh_check.h>
 
@@ -172,7 +172,7 @@ namespace dyncontact
       mesh_file =
         (std::filesystem::path(this->input_directory) / mesh_file).string();
     n_cells       = check_msh_file(mesh_file, dim);
-    mesh_checksum = Checkpoints::checksum_of_file(mesh_file);
+    mesh_checksum = checksum_of_file(mesh_file);
     AssertThrow(!body_tags[0].empty(),
                 ExcMessage(
                   "Scene/Gmsh/Body 1 tags must name at least one tag."));

@@ -4,8 +4,8 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
-#include <dyncontact/core/input_checks.h>
-#include <dyncontact/core/memory_check.h>
+#include <dyncontact/base/input_checks.h>
+#include <dyncontact/base/memory_check.h>
 #include <dyncontact/scenes/hertz.h>
 
 #include <cmath>

@@ -2,10 +2,12 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include <dyncontact/base/memory_check.h>
 #include <dyncontact/scenes/interface.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 namespace dyncontact
 {
@@ -165,8 +167,64 @@ namespace dyncontact
     result.create_triangulation(vertices, cells, subcell_data);
   }
 
+  template <int dim>
+  void
+  build_mesh(const Scene<dim>        &scene,
+             Triangulation<dim, dim> &triangulation,
+             const unsigned int       global_refinements,
+             const unsigned int       degree,
+             const bool               coarse_only)
+  {
+    const MPI_Comm    comm   = triangulation.get_communicator();
+    const std::string remedy = "Mesh/Initial global refinements (now " +
+                               std::to_string(global_refinements) +
+                               ") or the cell counts in " + scene.subsection();
+    const double coarse = scene.n_coarse_cells();
+    check_mesh_fits_in_memory(coarse * std::pow(2., dim * global_refinements),
+                              dim,
+                              degree,
+                              coarse,
+                              remedy,
+                              comm);
+    scene.create_coarse_mesh(triangulation);
+    if (!coarse_only)
+      {
+        for (unsigned int k = 0; k < global_refinements; ++k)
+          {
+            check_mesh_fits_in_memory(triangulation.n_global_active_cells() *
+                                        std::pow(2., dim),
+                                      dim,
+                                      degree,
+                                      triangulation.n_cells(0),
+                                      remedy,
+                                      comm);
+            triangulation.refine_global(1);
+          }
+        scene.refine_initial_mesh(triangulation);
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      AssertThrow(cell->material_id() < scene.n_bodies(),
+                  ExcMessage("A cell of the mesh has material id " +
+                             std::to_string(cell->material_id()) +
+                             ", but the scene has " +
+                             std::to_string(scene.n_bodies()) +
+                             " bodies (ids 0 to n-1)."));
+  }
+
   template class Scene<2>;
   template class Scene<3>;
+  template void
+  build_mesh<2>(const Scene<2> &,
+                Triangulation<2, 2> &,
+                const unsigned int,
+                const unsigned int,
+                const bool);
+  template void
+  build_mesh<3>(const Scene<3> &,
+                Triangulation<3, 3> &,
+                const unsigned int,
+                const unsigned int,
+                const bool);
   template std::unique_ptr<Scene<2>>
   create_scene<2>(ParameterHandler &, const std::string &);
   template std::unique_ptr<Scene<3>>

@@ -2,7 +2,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
-#include <dyncontact/core/input_checks.h>
+#include <dyncontact/base/input_checks.h>
 #include <dyncontact/scenes/bar_impact.h>
 #include <dyncontact/scenes/two_bars.h>
 

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 namespace dyncontact
 {
@@ -546,5 +548,30 @@ namespace dyncontact
         projection[p] = (flag & 2) ? 1 : 0;
       }
     warm_start(active, projection);
+  }
+
+
+  std::string
+  TimeIntegrator::inertia_warning() const
+  {
+    // in double precision, S = M + tau^2/4 A + tau/2 B keeps the mass only
+    // to about eps * max S_ii/M_ii
+    const double inertia_accuracy =
+      std::numeric_limits<double>::epsilon() * inertia_ratio();
+    if (!(inertia_accuracy > 1e-6))
+      return "";
+    std::ostringstream text;
+    text << std::setprecision(3)
+         << "   warning: in the step matrix S = M + tau^2/4 A + tau/2 B "
+            "the stiffness and viscosity outweigh the mass by a factor "
+         << inertia_ratio()
+         << " (largest S_ii/M_ii), so in double precision S keeps the "
+            "mass only to a relative accuracy of about "
+         << inertia_accuracy
+         << ": momentum and energy are conserved only to about that "
+            "per step. Reduce 'Time integration/Time step' (the factor "
+            "grows as tau^2 E/(rho h^2) + tau mu_v/(rho h^2))."
+         << std::endl;
+    return text.str();
   }
 } // namespace dyncontact

@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <dyncontact/core/input_checks.h>
+#include <dyncontact/base/input_checks.h>
 #include <dyncontact/time_stepping/row_force.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 

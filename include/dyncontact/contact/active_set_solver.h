@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dyncontact/contact/contact_row_operator.h>
 #include <dyncontact/contact/contact_rows.h>
 
 #include <algorithm>
@@ -35,67 +36,6 @@ namespace dyncontact
 
 
   /**
-   * The contact rows as an operator on distributed vectors: (C v)_p and
-   * (C v - g)_p for the rows of this rank (those of its locally owned slave
-   * nodes), from a vector with the ghost entries the rows need (the master
-   * DoFs at their image points). No reduction: a rank that needs a global
-   * figure reduces it itself.
-   */
-  class ContactRowOperator
-  {
-  public:
-    explicit ContactRowOperator(const MPI_Comm comm);
-
-    /// Sets the partitioning and the rows (once per mesh).
-    void
-    reinit(const IndexSet    &locally_owned,
-           const IndexSet    &locally_relevant,
-           const ContactRows &rows);
-
-    /// @p v with the ghost entries of the rows' DoFs (valid until the next
-    /// call): what reading a row's entries needs.
-    const VectorType &
-    with_row_ghosts(const VectorType &v) const;
-
-    /// (C v)_p for this rank's rows (no gap subtracted).
-    std::vector<double>
-    apply(const VectorType &v) const;
-
-    /// (C v - g)_p for this rank's rows.
-    std::vector<double>
-    constraint_values(const VectorType &v) const;
-
-    /// The locally relevant DoFs plus every DoF a row touches.
-    const IndexSet &
-    ghost_set() const
-    {
-      return ghosts;
-    }
-
-    const ContactRows &
-    rows() const
-    {
-      return *contact_rows;
-    }
-
-    std::size_t
-    size() const
-    {
-      return contact_rows == nullptr ? 0 : contact_rows->size();
-    }
-
-  private:
-    MPI_Comm           comm;
-    IndexSet           locally_owned;
-    IndexSet           ghosts;
-    const ContactRows *contact_rows = nullptr;
-    /// v with the ghost entries of the rows' DoFs (with_row_ghosts())
-    mutable VectorType ghosted_row_dofs;
-  };
-
-
-
-  /**
    * Solves   min 1/2 v^T H v - r^T v   subject to   C v <= g
    * (ALGORITHMS.md section 3) by the primal-dual active-set method
    * (semismooth Newton, as in deal.II's step-41/42). Each active row
@@ -117,9 +57,6 @@ namespace dyncontact
       unsigned int max_iterations        = 50;
       double       linear_tolerance      = 1e-12;
       unsigned int max_linear_iterations = 2000;
-      /// An initially penetrating configuration: rejected, or projected
-      /// onto K_h with a warning.
-      bool project_initial_penetration = false;
       /// AMG's near-null space: the rigid translations only, or also the
       /// infinitesimal rotations.
       bool amg_rotations = false;
@@ -301,6 +238,34 @@ namespace dyncontact
     void
     transpose_distribute(const AffineConstraints<double> &homogeneous,
                          VectorType                      &z) const;
+
+    /// One equality-constrained solve of the active-set iteration: v with
+    /// the rows of @p active as equalities (CG on the condensed system,
+    /// warm started from v). False (with the result's status set) if CG
+    /// fails.
+    bool
+    solve_on_active_set(const std::vector<char> &active,
+                        const bool               any_active,
+                        const VectorType        &r,
+                        const double             r_norm,
+                        VectorType              &v,
+                        Result                  &result) const;
+
+    /// The multipliers of the active rows, from the residual r - H v.
+    void
+    compute_multipliers(const std::vector<char> &active,
+                        const bool               any_active,
+                        const VectorType        &r,
+                        const VectorType        &v,
+                        std::vector<double>     &multipliers) const;
+
+    /// Against cycling: @p new_active becomes @p active with only the row
+    /// (over all ranks) that violates its condition the most changed.
+    void
+    change_one_row(const std::vector<char>   &active,
+                   const std::vector<double> &multipliers,
+                   const std::vector<double> &violation,
+                   std::vector<char>         &new_active) const;
 
     Result
     solve_pointwise(const VectorType    &r,

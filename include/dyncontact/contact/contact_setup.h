@@ -125,6 +125,53 @@ namespace dyncontact
     }
 
   private:
+    /// A locally owned node on the contact boundary: its position, its
+    /// DoFs and its scalar DoF.
+    struct BoundaryNode
+    {
+      Point<dim>                               x;
+      std::array<types::global_dof_index, dim> dofs;
+      types::global_dof_index                  scalar_dof;
+    };
+
+    /// The locally owned, non-hanging nodes on the boundary parts @p ids,
+    /// each once, in the order of the cells.
+    std::vector<BoundaryNode>
+    boundary_nodes(const SemiDiscreteSystem<dim>         &system,
+                   const Mapping<dim>                    &mapping,
+                   const std::vector<types::boundary_id> &ids) const;
+
+    /// Completes @p row (weight from @p w_ghosted, the eliminated
+    /// component) and keeps it, unless no component of its node is free.
+    void
+    add_row(ContactRow                      &row,
+            const types::global_dof_index    scalar_dof,
+            const VectorType                &w_ghosted,
+            const AffineConstraints<double> &constraints);
+
+    /// The rows of the nodes @p nodes against the rigid obstacle.
+    void
+    add_obstacle_rows(const RigidObstacle<dim>        &obstacle,
+                      const std::vector<BoundaryNode> &nodes,
+                      const VectorType                &w_ghosted,
+                      const AffineConstraints<double> &constraints);
+
+    /// The side (0 or 1) of a pair whose faces near the other side are
+    /// finer on average: the slave of "Slave side = auto".
+    unsigned int
+    finer_side(const std::array<std::vector<MasterFace<dim>>, 2> &sides,
+               const double search_radius) const;
+
+    /// The rows of the slave nodes of one two-body pair, through phi_h.
+    void
+    add_pair_rows(const Scene<dim>              &scene,
+                  const ContactPair             &pair,
+                  const unsigned int             pair_index,
+                  const SemiDiscreteSystem<dim> &system,
+                  const Mapping<dim>            &mapping,
+                  const VectorType              &w_ghosted,
+                  const ConditionalOStream      &pcout);
+
     /// This rank's contact faces (of its locally owned cells) with boundary
     /// ids @p ids; sides of a face shared with a boundary face of
     /// @p symmetry_ids (a plane of symmetry) are marked.

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <dyncontact/core/statistics.h>
+#include <dyncontact/base/statistics.h>
 
 #include <iosfwd>
 #include <string>

@@ -6,13 +6,15 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <dyncontact/base/global_parameters.h>
+#include <dyncontact/base/statistics.h>
 #include <dyncontact/contact/active_set_solver.h>
-#include <dyncontact/core/parameters.h>
-#include <dyncontact/core/simulation_control.h>
 #include <dyncontact/core/simulator_access.h>
-#include <dyncontact/core/statistics.h>
+#include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/output/checkpoint.h>
+#include <dyncontact/output/run_report.h>
 #include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <memory>
@@ -95,13 +97,6 @@ namespace dyncontact
     /// Everything from the last good checkpoint (a resumed run).
     void
     resume();
-    /// What the run uses and leaves out, the DoFs per body, the rows, tau
-    /// and the number of steps.
-    void
-    print_banner();
-    /// The summary, printed and written to summary.txt (rank 0).
-    void
-    write_summary();
     /// One statistics row (and a reference state, if due).
     void
     record_statistics();
@@ -134,9 +129,13 @@ namespace dyncontact
 
     VectorType u, udot, u_old, udot_old;
     StepReport report, initial_report;
-    double     step_wall_time = 0.;
-    bool       outputs_open   = false;
-    bool       warned_inertia = false;
+    /// What follows the present step (output, refinement, checkpoint).
+    StepMoments moments;
+    /// What the transfers to adapted meshes did since the last row.
+    MeshTransfer mesh_transfer;
+    double       step_wall_time = 0.;
+    bool         outputs_open   = false;
+    bool         warned_inertia = false;
     /// step matrices S built by the integrators of earlier meshes
     unsigned int n_step_matrices = 0;
 
@@ -147,6 +146,7 @@ namespace dyncontact
     Checkpoints                                checkpoints;
     std::unique_ptr<OutputDirectory>           output_directory;
     std::unique_ptr<Progress>                  progress;
+    RunReport<dim>                             run_report;
     Timer                                      run_clock, loop_clock;
 
     friend class SimulatorAccess<dim>;

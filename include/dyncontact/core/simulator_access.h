@@ -27,7 +27,11 @@ namespace dyncontact
   class ReferenceStates;
   class TimeIntegrator;
   class SimulationControl;
+  class TimeStepController;
+  struct Statistics;
   struct StepReport;
+  struct StepMoments;
+  struct MeshTransfer;
   struct GlobalParameters;
 
   /**
@@ -84,6 +88,14 @@ namespace dyncontact
     const SimulationControl &
     get_control() const;
 
+    /// The owner of tau (its bounds, its counts of events and retries).
+    const TimeStepController &
+    get_time_step_controller() const;
+
+    /// The statistics table so far (every row on every rank).
+    const Statistics &
+    get_statistics() const;
+
     /// u^n and udot^n after the last step.
     const VectorType &
     get_solution() const;
@@ -97,6 +109,16 @@ namespace dyncontact
     /// What the last step (or the initial velocity, at step 0) reported.
     const StepReport &
     get_step_report() const;
+
+    /// What follows the last step: output, refinement, checkpoint, the end
+    /// (all false before the first step).
+    const StepMoments &
+    get_moments() const;
+
+    /// What the transfers to adapted meshes did since the last statistics
+    /// row.
+    const MeshTransfer &
+    get_mesh_transfer() const;
 
     /// Wall time of the last step, in s (0 at step 0).
     double

@@ -4,7 +4,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <dyncontact/discretization/material.h>
+#include <dyncontact/scenes/material.h>
 
 #include <map>
 #include <memory>

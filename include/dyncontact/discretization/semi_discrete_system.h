@@ -169,6 +169,11 @@ namespace dyncontact
     void
     reinit_vector(VectorType &v) const;
 
+    /// A copy of @p v (an owned vector of this system) with the ghost
+    /// entries of the locally relevant DoFs, for reading it on cells.
+    VectorType
+    ghosted(const VectorType &v) const;
+
     /// E_kin = 1/2 udot^T M udot and E_el = 1/2 u^T A u - f^T u;
     /// @p M_udot receives M udot.
     std::pair<double, double>
@@ -343,6 +348,14 @@ namespace dyncontact
     /// rows, columns of the locally relevant DoFs), shared by the matrices
     /// built on it.
     std::unique_ptr<Epetra_CrsGraph> graph;
+    /// Hanging nodes and the scene's homogeneous Dirichlet data.
+    void
+    make_constraints(const Scene<dim> &scene);
+    /// For each locally owned node its component-0 and scalar DoF, for each
+    /// locally owned DoF its body and component, the DoFs of each body and
+    /// the rigid translations.
+    void
+    index_owned_nodes(const unsigned int n_bodies);
     /// Makes the graph (in setup()).
     void
     make_sparsity_graph();
@@ -351,6 +364,10 @@ namespace dyncontact
     /// relevant sets (collective).
     bool
     vector_dofs_expand_scalar_dofs() const;
+    /// The scene's tractions, with its loads given as total forces spread
+    /// over the boundary as the mesh represents it (in assembly.cc).
+    std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+    boundary_tractions(const Scene<dim> &scene) const;
     /// A zero matrix on the graph.
     void
     reinit_matrix(MatrixType &matrix) const;

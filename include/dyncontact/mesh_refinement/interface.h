@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <dyncontact/core/plugins.h>
+#include <dyncontact/base/plugins.h>
 #include <dyncontact/core/simulator_access.h>
 
 namespace dealii

@@ -23,9 +23,8 @@ namespace dyncontact
    * the top fraction refined and the bottom fraction coarsened, then each
    * criterion flags the cells it insists on), within the level bounds.
    * Before t = 0 the contact zone is refined "Initial contact refinements"
-   * times. The adaptor also keeps the record of what the transfers of the
-   * state did (energy change, violation of K_h) since the last statistics
-   * row.
+   * times. What a transfer of the state did is the simulator's
+   * MeshTransfer record.
    */
   template <int dim>
   class MeshAdaptor : public SimulatorAccess<dim>
@@ -83,34 +82,6 @@ namespace dyncontact
     void
     mark_contact_zone() const;
 
-    /// A transfer changed the energy by @p energy_change (J) and left a
-    /// violation @p penetration (m) of K_h before the projection.
-    void
-    record_transfer(const double energy_change, const double penetration);
-
-    /// Energy change of the transfers since the last row (J).
-    double
-    get_energy_transfer() const
-    {
-      return energy_transfer;
-    }
-
-    /// Largest violation of K_h they left (m).
-    double
-    get_transfer_penetration() const
-    {
-      return transfer_penetration;
-    }
-
-    /// The statistics row has been written: start a new record.
-    void
-    start_new_row();
-
-    void
-    save(std::map<std::string, std::string> &state) const;
-    void
-    load(const std::map<std::string, std::string> &state);
-
   private:
     unsigned int             interval            = 0;
     unsigned int             min_level           = 0;
@@ -123,9 +94,6 @@ namespace dyncontact
     std::vector<std::unique_ptr<MeshRefinement::Interface<dim>>> criteria;
     /// The contact-zone criterion of the refinement before t = 0.
     std::unique_ptr<MeshRefinement::Interface<dim>> contact_zone;
-
-    double energy_transfer      = 0.;
-    double transfer_penetration = 0.;
   };
 } // namespace dyncontact
 

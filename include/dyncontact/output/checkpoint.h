@@ -78,10 +78,6 @@ namespace dyncontact
     void
     add_critical_parameter(const std::string &name, const std::string &value);
 
-    /// The CRC-32 of the file @p name, as a hexadecimal string.
-    static std::string
-    checksum_of_file(const std::string &name);
-
   private:
     /// Checks the files of checkpoint @p directory against the sizes and
     /// checksums in its state.txt: "" if all is well, else what is wrong.

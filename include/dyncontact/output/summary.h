@@ -1,7 +1,7 @@
 #ifndef dyncontact_output_summary_h
 #define dyncontact_output_summary_h
 
-#include <dyncontact/core/statistics.h>
+#include <dyncontact/base/statistics.h>
 
 #include <map>
 #include <string>

@@ -1,9 +1,9 @@
 #ifndef dyncontact_postprocess_interface_h
 #define dyncontact_postprocess_interface_h
 
-#include <dyncontact/core/plugins.h>
+#include <dyncontact/base/plugins.h>
+#include <dyncontact/base/statistics.h>
 #include <dyncontact/core/simulator_access.h>
-#include <dyncontact/core/statistics.h>
 
 #include <fstream>
 #include <map>
@@ -138,6 +138,12 @@ namespace dyncontact
       {
         return sampled_columns[c];
       }
+
+      /// Stops the run with a message naming the statistic if a value of
+      /// the last row is not finite (nan in a sampled column marks a step
+      /// without a value).
+      void
+      check_last_row() const;
 
       /// The rows so far and every postprocessor's accumulators.
       void

@@ -5,8 +5,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
-#include <dyncontact/core/plugins.h>
-#include <dyncontact/discretization/material.h>
+#include <dyncontact/base/plugins.h>
+#include <dyncontact/scenes/material.h>
 
 #include <array>
 #include <memory>
@@ -298,6 +298,22 @@ namespace dyncontact
   template <int dim>
   std::unique_ptr<Scene<dim>>
   create_scene(ParameterHandler &prm, const std::string &input_directory);
+
+  /**
+   * Builds @p scene's mesh in @p triangulation: its coarse mesh, then
+   * (unless @p coarse_only: a resumed run loads the refined mesh from its
+   * checkpoint) @p global_refinements global refinements and the scene's
+   * own. A mesh that would not fit into memory for FE_Q(@p degree)^dim is
+   * refused before it is allocated; every cell must belong to a body.
+   * Collective.
+   */
+  template <int dim>
+  void
+  build_mesh(const Scene<dim>        &scene,
+             Triangulation<dim, dim> &triangulation,
+             const unsigned int       global_refinements,
+             const unsigned int       degree,
+             const bool               coarse_only);
 
   /**
    * Builds one coarse mesh from several coarse meshes (the bodies) without

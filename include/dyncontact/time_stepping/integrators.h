@@ -111,6 +111,13 @@ namespace dyncontact
     double
     mass_norm(const VectorType &x) const;
 
+    /// The tolerances of the contact solves.
+    const ActiveSetSolver::Parameters &
+    get_solver_parameters() const
+    {
+      return solver_parameters;
+    }
+
     /// Computes A u for the next step's right-hand side (kept in the
     /// system's CachedProduct, where the energy finds it too).
     void
@@ -341,6 +348,12 @@ namespace dyncontact
     {
       return operators.inertia_ratio();
     }
+
+    /// A warning if S keeps the mass only to a poor relative accuracy (eps
+    /// times inertia_ratio() above 1e-6: momentum and energy drift by that
+    /// much per step), else "".
+    std::string
+    inertia_warning() const;
 
     /// Whether CG is preconditioned by AMG for the current step (else by
     /// Jacobi).

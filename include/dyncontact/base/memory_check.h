@@ -1,5 +1,5 @@
-#ifndef dyncontact_core_memory_check_h
-#define dyncontact_core_memory_check_h
+#ifndef dyncontact_base_memory_check_h
+#define dyncontact_base_memory_check_h
 
 #include <deal.II/base/mpi.h>
 

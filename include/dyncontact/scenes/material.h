@@ -1,5 +1,5 @@
-#ifndef dyncontact_material_h
-#define dyncontact_material_h
+#ifndef dyncontact_scenes_material_h
+#define dyncontact_scenes_material_h
 
 #include <string>
 

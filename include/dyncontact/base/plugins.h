@@ -1,5 +1,5 @@
-#ifndef dyncontact_core_plugins_h
-#define dyncontact_core_plugins_h
+#ifndef dyncontact_base_plugins_h
+#define dyncontact_base_plugins_h
 
 #include <deal.II/base/exceptions.h>
 

@@ -1,8 +1,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <dyncontact/core/input_checks.h>
-#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/base/input_checks.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <cmath>
@@ -107,7 +107,7 @@ namespace dyncontact
 
 
 
-  void
+  StepMoments
   SimulationControl::advance(const double tau, const bool tau_changed)
   {
     ++step;
@@ -118,45 +118,23 @@ namespace dyncontact
       }
     ++steps_since;
     time = is_static ? end_time : time_base + steps_since * tau;
-  }
 
-
-
-  bool
-  SimulationControl::output_due() const
-  {
-    return time >= next_output - 1e-9 * time_step_controller.get_timestep() ||
-           !keep_going();
-  }
-
-
-
-  void
-  SimulationControl::output_written()
-  {
-    next_output += output_interval;
-  }
-
-
-
-  bool
-  SimulationControl::checkpoint_due() const
-  {
-    bool due = checkpoint_steps > 0 && step % checkpoint_steps == 0;
+    StepMoments moments;
+    moments.last = !keep_going();
+    moments.output =
+      time >= next_output - 1e-9 * time_step_controller.get_timestep() ||
+      moments.last;
+    if (moments.output)
+      next_output += output_interval;
+    moments.checkpoint = checkpoint_steps > 0 && step % checkpoint_steps == 0;
     if (checkpoint_minutes > 0.)
-      due = due || Utilities::MPI::broadcast(comm,
-                                             since_checkpoint.wall_time() >
-                                               60. * checkpoint_minutes,
-                                             0);
-    return due;
-  }
-
-
-
-  void
-  SimulationControl::checkpoint_written()
-  {
-    since_checkpoint.restart();
+      moments.checkpoint =
+        moments.checkpoint ||
+        Utilities::MPI::broadcast(
+          comm, since_checkpoint.wall_time() > 60. * checkpoint_minutes, 0);
+    if (moments.checkpoint)
+      since_checkpoint.restart();
+    return moments;
   }
 
 

@@ -1,5 +1,5 @@
-#ifndef dyncontact_statistics_h
-#define dyncontact_statistics_h
+#ifndef dyncontact_base_statistics_h
+#define dyncontact_base_statistics_h
 
 #include <ostream>
 #include <string>

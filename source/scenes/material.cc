@@ -1,8 +1,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <dyncontact/core/input_checks.h>
-#include <dyncontact/discretization/material.h>
+#include <dyncontact/base/input_checks.h>
+#include <dyncontact/scenes/material.h>
 
 #include <cmath>
 #include <sstream>

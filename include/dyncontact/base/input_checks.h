@@ -1,5 +1,5 @@
-#ifndef dyncontact_core_input_checks_h
-#define dyncontact_core_input_checks_h
+#ifndef dyncontact_base_input_checks_h
+#define dyncontact_base_input_checks_h
 
 #include <deal.II/base/exceptions.h>
 

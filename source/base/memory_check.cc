@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <dyncontact/core/memory_check.h>
+#include <dyncontact/base/memory_check.h>
 
 #include <cmath>
 #include <fstream>

@@ -1,5 +1,5 @@
-#ifndef dyncontact_core_parameters_h
-#define dyncontact_core_parameters_h
+#ifndef dyncontact_core_parameter_file_h
+#define dyncontact_core_parameter_file_h
 
 #include <string>
 
@@ -10,27 +10,6 @@ namespace dealii
 
 namespace dyncontact
 {
-  /**
-   * The parameters that belong to no single component: the dimension, the
-   * output directory, the global refinements of the scene's mesh, and the
-   * folder of the prm file. Every other group is declared and read by the
-   * component that uses it (Simulator::declare_parameters() collects them).
-   */
-  struct GlobalParameters
-  {
-    unsigned int dimension           = 2;
-    std::string  output_directory    = "results";
-    unsigned int initial_refinements = 0;
-    /// Folder of the prm file (relative file names in it refer to it).
-    std::string input_directory;
-
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
-  };
-
   /// Declares every parameter of the program (all components and plugins).
   void
   declare_all_parameters(dealii::ParameterHandler &prm);

@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <dyncontact/core/statistics.h>
+#include <dyncontact/base/statistics.h>
 
 #include <algorithm>
 #include <iomanip>

@@ -1,9 +1,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <dyncontact/base/global_parameters.h>
 #include <dyncontact/contact/contact_setup.h>
-#include <dyncontact/core/parameters.h>
-#include <dyncontact/core/simulation_control.h>
+#include <dyncontact/core/parameter_file.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/output/checkpoint.h>
@@ -13,6 +13,7 @@
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <algorithm>
@@ -116,43 +117,6 @@ namespace dyncontact
       std::filesystem::weakly_canonical(source, error).string()};
     std::vector<std::string> chain_lines;
     return expand_includes(text, source, chain, chain_lines);
-  }
-
-
-
-  void
-  GlobalParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension of the simulation: 2 or 3.");
-    prm.declare_entry("Output directory",
-                      "results",
-                      Patterns::Anything(),
-                      "Folder for the VTU/PVTU/PVD files and statistics.tsv; "
-                      "created if missing, relative to the working directory.");
-    prm.enter_subsection("Mesh");
-    prm.declare_entry("Initial global refinements",
-                      "0",
-                      Patterns::Integer(0, 12),
-                      "Number of global refinements of the scene's coarse "
-                      "mesh, 0 to 12.");
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  GlobalParameters::parse_parameters(ParameterHandler &prm)
-  {
-    dimension        = prm.get_integer("Dimension");
-    output_directory = prm.get("Output directory");
-    AssertThrow(!output_directory.empty(),
-                ExcMessage("Output directory must not be empty."));
-    prm.enter_subsection("Mesh");
-    initial_refinements = prm.get_integer("Initial global refinements");
-    prm.leave_subsection();
   }
 
 

@@ -1,5 +1,5 @@
-#ifndef dyncontact_core_simulation_control_h
-#define dyncontact_core_simulation_control_h
+#ifndef dyncontact_time_stepping_simulation_control_h
+#define dyncontact_time_stepping_simulation_control_h
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -19,12 +19,32 @@ namespace dyncontact
   class TimeStepController;
 
   /**
+   * What happens after an accepted step, decided once when the step is
+   * accepted and read by everyone as a value (so that nothing depends on
+   * the order in which the simulator and its statistics ask):
+   * SimulationControl::advance() decides the output, the checkpoint and
+   * the last step, the simulator adds the mesh adaptor's refinement.
+   */
+  struct StepMoments
+  {
+    /// An output time is reached (the last step is one): VTU files are
+    /// written if they are enabled, sampled statistics are evaluated.
+    bool output = false;
+    /// A checkpoint is written after this step (the same on all ranks).
+    bool checkpoint = false;
+    /// The mesh is adapted after this step (never after the last one).
+    bool refinement = false;
+    /// No step follows.
+    bool last = false;
+  };
+
+  /**
    * The owner of time (as lethe's SimulationControl): the end time, the
    * step number and the time t_n = t_base + k tau (so that times do not
    * accumulate round-off; t_base is the time at which tau last changed),
-   * and the moments of VTU output and of checkpoints. The time step tau is
-   * the TimeStepController's: advance() is handed the accepted step's, and
-   * the comparisons of times with End time and output times allow
+   * and the moments of VTU output and of checkpoints (StepMoments). The time
+   * step tau is the TimeStepController's: advance() is handed the accepted
+   * step's, and the comparisons of times with End time and output times allow
    * round-off of 1e-9 of the controller's present tau. The static problem
    * is one step to the end time.
    */
@@ -67,26 +87,11 @@ namespace dyncontact
     keep_going() const;
 
     /// After an accepted step of length @p tau: t_{n+1}, counted from t_n if
-    /// @p tau_changed since the step before.
-    void
+    /// @p tau_changed since the step before, and the moments of this step
+    /// (output, checkpoint, last step; the next output time moves on by one
+    /// interval when one is reached, the checkpoint clock restarts).
+    StepMoments
     advance(const double tau, const bool tau_changed);
-
-    /// Whether an output time has been reached after this step: VTU files
-    /// are written then (if they are written at all), and the sampled
-    /// postprocessors (the error norm) are evaluated.
-    bool
-    output_due() const;
-
-    /// Moves the next output time on by one interval.
-    void
-    output_written();
-
-    /// Whether a checkpoint is due after this step (the same on all ranks).
-    bool
-    checkpoint_due() const;
-
-    void
-    checkpoint_written();
 
     /// Whether the run is the static problem (one step).
     bool

@@ -1,0 +1,34 @@
+#ifndef dyncontact_output_run_report_h
+#define dyncontact_output_run_report_h
+
+#include <dyncontact/core/simulator_access.h>
+
+#include <string>
+
+namespace dyncontact
+{
+  /**
+   * The run's reports to the user: the banner (what the run uses and leaves
+   * out: bodies, contact, material, solver, time steps) and the summary at
+   * the end (summary_text() of the statistics, printed and written to
+   * summary.txt).
+   */
+  template <int dim>
+  class RunReport : public SimulatorAccess<dim>
+  {
+  public:
+    /// The banner's lines, for the state after the setup.
+    std::string
+    banner() const;
+
+    /// Prints the summary and writes summary.txt (rank 0); @p wall_time
+    /// and @p loop_wall_time: of the run and of its time loop (s);
+    /// @p step_matrices: the step matrices S built in the whole run.
+    void
+    write_summary(const double       wall_time,
+                  const double       loop_wall_time,
+                  const unsigned int step_matrices) const;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,43 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/base/global_parameters.h>
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  void
+  GlobalParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the simulation: 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "results",
+                      Patterns::Anything(),
+                      "Folder for the VTU/PVTU/PVD files and statistics.tsv; "
+                      "created if missing, relative to the working directory.");
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Initial global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Number of global refinements of the scene's coarse "
+                      "mesh, 0 to 12.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GlobalParameters::parse_parameters(ParameterHandler &prm)
+  {
+    dimension        = prm.get_integer("Dimension");
+    output_directory = prm.get("Output directory");
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Output directory must not be empty."));
+    prm.enter_subsection("Mesh");
+    initial_refinements = prm.get_integer("Initial global refinements");
+    prm.leave_subsection();
+  }
+} // namespace dyncontact

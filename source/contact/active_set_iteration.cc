@@ -1,0 +1,391 @@
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_index_access.h>
+
+#include <dyncontact/contact/active_set_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  // The active-set iteration of ActiveSetSolver: the solve on one active
+  // set, the multipliers, the update of the set and the damping of cycles
+  // (the matrices and preconditioners it uses are set up in
+  // active_set_solver.cc).
+
+  void
+  ActiveSetSolver::vmult_H(VectorType &y, const VectorType &x) const
+  {
+    if (H != nullptr)
+      H->vmult(y, x);
+    else
+      {
+        y = x;
+        y.scale(diagonal);
+      }
+  }
+
+
+
+  void
+  ActiveSetSolver::make_constraints(const std::vector<char>   &active,
+                                    AffineConstraints<double> &constraints,
+                                    const bool homogeneous) const
+  {
+    // local lines: the relevant DoFs and the rows' DoFs (clear() alone
+    // would size the lines' index cache by the global number of DoFs on
+    // every rank)
+    constraints.reinit(row_operator.ghost_set());
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      if (active[p])
+        {
+          const ContactRow      &row = rows->rows[p];
+          const global_dof_index i   = row.eliminated_dof();
+          const double           c_i = row.entries[row.eliminated].second;
+          // c_i v_i + sum_{k != i} c_k v_k = g
+          constraints.add_line(i);
+          for (unsigned int k = 0; k < row.entries.size(); ++k)
+            if (k != row.eliminated)
+              constraints.add_entry(i,
+                                    row.entries[k].first,
+                                    -row.entries[k].second / c_i);
+          if (!homogeneous)
+            constraints.set_inhomogeneity(i, row.gap / c_i);
+        }
+    // (the contact lines are not restricted to the mesh constraints' local
+    // lines, hence different local lines)
+    constraints.merge(mesh_constraints,
+                      AffineConstraints<double>::left_object_wins,
+                      true);
+    constraints.close();
+  }
+
+
+
+  void
+  ActiveSetSolver::transpose_distribute(
+    const AffineConstraints<double> &homogeneous,
+    VectorType                      &z) const
+  {
+    // z <- T^T z: every owned constrained entry z_i is added, times the
+    // coefficient, to the entries z_j it depends on (possibly owned
+    // elsewhere), and then set to zero.
+    additions = 0.;
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        {
+          const double z_i = z(line.index);
+          for (const auto &entry : line.entries)
+            additions(entry.first) += entry.second * z_i;
+        }
+    additions.compress(VectorOperation::add);
+    z += additions;
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        z(line.index) = 0.;
+    z.compress(VectorOperation::insert);
+  }
+
+
+
+  void
+  ActiveSetSolver::vmult_condensed(const AffineConstraints<double> &homogeneous,
+                                   VectorType                      &y,
+                                   const VectorType                &x) const
+  {
+    Tx = x;
+    homogeneous.distribute(Tx);
+    vmult_H(y, Tx);
+    transpose_distribute(homogeneous, y);
+    // constrained entries: identity scaled by H's diagonal (they stay zero)
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        y(line.index) = diagonal(line.index) * x(line.index);
+    y.compress(VectorOperation::insert);
+  }
+
+
+
+  ActiveSetSolver::Result
+  ActiveSetSolver::solve_pointwise(const VectorType    &r,
+                                   VectorType          &v,
+                                   std::vector<char>   &active,
+                                   std::vector<double> &multipliers) const
+  {
+    // H diagonal, rows on disjoint unconstrained slave DoFs: the
+    // unconstrained minimiser is v = D^{-1} r, and each row is then the
+    // projection of its node onto a half-space in the D-norm.
+    for (const auto i : locally_owned)
+      v(i) = mesh_constraints.is_constrained(i) ? 0. : r(i) / diagonal(i);
+    v.compress(VectorOperation::insert);
+
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      {
+        const ContactRow &row = rows->rows[p];
+        double            cv = 0., cDc = 0.;
+        for (const auto &entry : row.entries)
+          {
+            cv += entry.second * v(entry.first);
+            cDc += entry.second * entry.second / diagonal(entry.first);
+          }
+        const double t = (cv - row.gap) / cDc;
+        if (t > 0.)
+          {
+            for (const auto &entry : row.entries)
+              v(entry.first) -= t * entry.second / diagonal(entry.first);
+            multipliers[p] = t;
+            active[p]      = 1;
+          }
+        else
+          active[p] = 0;
+      }
+    v.compress(VectorOperation::insert);
+    Result result;
+    result.iterations = 1;
+    return result;
+  }
+
+
+
+  bool
+  ActiveSetSolver::solve_on_active_set(const std::vector<char> &active,
+                                       const bool               any_active,
+                                       const VectorType        &r,
+                                       const double             r_norm,
+                                       VectorType              &v,
+                                       Result                  &result) const
+  {
+    AffineConstraints<double> constraints, homogeneous;
+    make_constraints(active, constraints, false);
+    make_constraints(active, homogeneous, true);
+
+    // k: the inhomogeneities (v = T x + k)
+    VectorType k(r), b(r), x(r);
+    k = 0.;
+    constraints.distribute(k);
+
+    // b = T^T (r - H k)
+    if (any_active)
+      {
+        vmult_H(b, k);
+        b.sadd(-1., 1., r);
+      }
+    else
+      b = r;
+    transpose_distribute(homogeneous, b);
+
+    // warm start: the previous iterate, constrained entries zero
+    x = v;
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        x(line.index) = 0.;
+    x.compress(VectorOperation::insert);
+
+    const double tolerance =
+      std::max(parameters.linear_tolerance * std::max(b.l2_norm(), r_norm),
+               1e-300);
+    SolverControl        control(parameters.max_linear_iterations, tolerance);
+    SolverCG<VectorType> cg(control);
+
+    struct Operator
+    {
+      const ActiveSetSolver           *solver;
+      const AffineConstraints<double> *homogeneous;
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        solver->vmult_condensed(*homogeneous, dst, src);
+      }
+    } op{this, &homogeneous};
+
+    struct Preconditioner
+    {
+      const ActiveSetSolver           *solver;
+      const AffineConstraints<double> *homogeneous;
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        if (solver->amg)
+          solver->amg->vmult(dst, src);
+        else
+          {
+            dst = src;
+            dst.scale(solver->inverse_diagonal);
+          }
+        for (const auto &line : homogeneous->get_lines())
+          if (solver->locally_owned.is_element(line.index))
+            dst(line.index) = 0.;
+        dst.compress(VectorOperation::insert);
+      }
+    } preconditioner{this, &homogeneous};
+
+    try
+      {
+        cg.solve(op, x, b, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        // reported, not thrown: the step control acts on it
+        result.linear_iterations += e.last_step;
+        result.linear_residual = e.last_residual;
+        result.status          = Status::linear_solver_failed;
+        return false;
+      }
+    result.linear_iterations += control.last_step();
+
+    v = x;
+    constraints.distribute(v);
+    return true;
+  }
+
+
+
+  void
+  ActiveSetSolver::compute_multipliers(const std::vector<char> &active,
+                                       const bool               any_active,
+                                       const VectorType        &r,
+                                       const VectorType        &v,
+                                       std::vector<double> &multipliers) const
+  {
+    // from the residual r - H v at the slave nodes
+    if (!any_active)
+      {
+        std::fill(multipliers.begin(), multipliers.end(), 0.);
+        return;
+      }
+    VectorType residual(r);
+    vmult_H(residual, v);
+    residual.sadd(-1., 1., r);
+    const VectorType &ghosted = row_operator.with_row_ghosts(residual);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      {
+        const ContactRow &row = rows->rows[p];
+        multipliers[p]        = 0.;
+        if (active[p])
+          for (unsigned int c = 0; c < row.n_components; ++c)
+            multipliers[p] += row.normal[c] * ghosted(row.entries[c].first);
+      }
+  }
+
+
+
+  void
+  ActiveSetSolver::change_one_row(const std::vector<char>   &active,
+                                  const std::vector<double> &multipliers,
+                                  const std::vector<double> &violation,
+                                  std::vector<char>         &new_active) const
+  {
+    unsigned int worst = 0;
+    double       size  = -1.;
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      if (new_active[p] != active[p])
+        {
+          const double c =
+            std::abs(multipliers[p] / row_scaling[p] + violation[p]);
+          if (c > size)
+            {
+              size  = c;
+              worst = p;
+            }
+        }
+    // the worst row over all ranks (the first rank among equals)
+    const double       largest = Utilities::MPI::max(size, comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int owner   = Utilities::MPI::min(
+      size == largest ? my_rank : Utilities::MPI::n_mpi_processes(comm), comm);
+    new_active = active;
+    if (owner == my_rank)
+      new_active[worst] = !active[worst];
+  }
+
+
+
+  ActiveSetSolver::Result
+  ActiveSetSolver::solve(const VectorType    &r,
+                         VectorType          &v,
+                         std::vector<char>   &active,
+                         std::vector<double> &multipliers) const
+  {
+    Assert(H != nullptr || diagonal.size() > 0, ExcInternalError());
+    active.resize(rows->size(), 0);
+    multipliers.assign(rows->size(), 0.);
+
+    if (pointwise)
+      return solve_pointwise(r, v, active, multipliers);
+
+    Result result;
+    // the local part of every active set visited so far (to detect cycling)
+    std::vector<std::vector<char>> visited;
+    const double                   r_norm = r.l2_norm();
+
+    for (result.iterations = 1;; ++result.iterations)
+      {
+        // without active rows every multiplier is zero
+        const bool any_active =
+          Utilities::MPI::max(
+            std::find(active.begin(), active.end(), 1) != active.end() ? 1 : 0,
+            comm) == 1;
+        if (!solve_on_active_set(active, any_active, r, r_norm, v, result))
+          return result;
+        compute_multipliers(active, any_active, r, v, multipliers);
+
+        // new active set: mu_p + c_p (C v - g)_p > 0
+        // (a displacement tolerance delta keeps round-off from flipping rows
+        // that sit exactly on the constraint)
+        const std::vector<double> violation = row_operator.constraint_values(v);
+        double                    scale     = 0.;
+        for (const ContactRow &row : rows->rows)
+          scale = std::max(scale, std::abs(row.gap));
+        scale = std::max(Utilities::MPI::max(scale, comm), v.linfty_norm());
+        const double      delta = 1e-11 * scale;
+        std::vector<char> new_active(rows->size(), 0);
+        for (unsigned int p = 0; p < rows->size(); ++p)
+          new_active[p] = (multipliers[p] + row_scaling[p] * violation[p] >
+                           row_scaling[p] * delta) ?
+                            1 :
+                            0;
+
+        result.residual = 0.;
+        for (unsigned int p = 0; p < rows->size(); ++p)
+          result.residual =
+            std::max(result.residual,
+                     std::abs(std::min(multipliers[p] / row_scaling[p],
+                                       -violation[p])));
+        result.residual = Utilities::MPI::max(result.residual, comm);
+        // converged: the active set is unchanged, or it still changes only
+        // on degenerate rows (touching with zero force) while the
+        // complementarity conditions hold to the displacement tolerance
+        const bool unchanged =
+          Utilities::MPI::min(new_active == active ? 1 : 0, comm) == 1;
+        if (unchanged || result.residual <= delta)
+          break;
+        if (result.iterations >= parameters.max_iterations)
+          {
+            result.status = Status::active_set_not_converged;
+            break;
+          }
+        // cycling between active sets ("ping-pong"): damp the iteration by
+        // changing only the row that violates its condition the most
+        // (a set was visited if it matches on every rank: one scalar
+        // reduction per earlier iterate)
+        visited.push_back(active);
+        std::vector<unsigned int> matches(visited.size());
+        for (unsigned int k = 0; k < visited.size(); ++k)
+          matches[k] = (visited[k] == new_active) ? 1 : 0;
+        Utilities::MPI::min(matches, comm, matches);
+        if (std::find(matches.begin(), matches.end(), 1u) != matches.end())
+          {
+            result.cycled = true;
+            change_one_row(active, multipliers, violation, new_active);
+          }
+        active = new_active;
+      }
+    return result;
+  }
+} // namespace dyncontact

@@ -1,0 +1,511 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <dyncontact/discretization/element_matrix_adder.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+#include <tuple>
+
+// The assembly of the semi-discrete system: M (or its diagonal), f and the
+// boundary weights w (SemiDiscreteSystem::assemble()), and the matrix
+// a A + b B + m M of the step (assemble_stiffness_matrix()).
+
+namespace dyncontact
+{
+  namespace
+  {
+    /// The displacement component and the scalar FE_Q shape function of
+    /// each shape function of FE_Q<dim>^dim.
+    template <int dim>
+    std::pair<std::vector<unsigned int>, std::vector<unsigned int>>
+    components_and_nodes(const FESystem<dim> &fe)
+    {
+      std::vector<unsigned int> component(fe.n_dofs_per_cell()),
+        node(fe.n_dofs_per_cell());
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          component[i] = fe.system_to_component_index(i).first;
+          node[i]      = fe.system_to_component_index(i).second;
+        }
+      return {component, node};
+    }
+
+
+
+    /**
+     * The element mass matrix (only its diagonal if lumped), load and
+     * boundary weights of one cell. Every shape function of FE_Q<dim>^dim
+     * is a scalar shape function of FE_Q times a unit vector, so the
+     * integrals are those of the scalar element.
+     */
+    template <int dim>
+    class CellTerms
+    {
+    public:
+      CellTerms(const Mapping<dim>  &mapping,
+                const FESystem<dim> &fe,
+                const FE_Q<dim>     &scalar_fe,
+                const bool           lumped_mass)
+        : lumped_mass(lumped_mass)
+        , quadrature(fe.degree + 1)
+        // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes
+        // the element mass matrix of FE_Q diagonal
+        , mass_quadrature(lumped_mass ?
+                            Quadrature<dim>(QGaussLobatto<dim>(fe.degree + 1)) :
+                            Quadrature<dim>(QGauss<dim>(fe.degree + 1)))
+        , face_quadrature(fe.degree + 1)
+        , lumped_face_quadrature(fe.degree + 1)
+        , fe_values(mapping,
+                    scalar_fe,
+                    quadrature,
+                    update_values | update_JxW_values)
+        , mass_values(mapping,
+                      scalar_fe,
+                      mass_quadrature,
+                      update_values | update_JxW_values)
+        , face_values(mapping,
+                      scalar_fe,
+                      face_quadrature,
+                      update_values | update_JxW_values)
+        , lumped_face_values(mapping,
+                             scalar_fe,
+                             lumped_face_quadrature,
+                             update_values | update_JxW_values)
+        , dofs_per_cell(fe.n_dofs_per_cell())
+        , n_nodes(scalar_fe.n_dofs_per_cell())
+        , scalar_mass(n_nodes * n_nodes)
+        , scalar_load(n_nodes)
+      {
+        mass.reinit(dofs_per_cell, dofs_per_cell);
+        load.reinit(dofs_per_cell);
+        boundary_weights.reinit(dofs_per_cell);
+        std::tie(component, node) = components_and_nodes(fe);
+      }
+
+      /// The terms of @p cell, of density @p rho and body force
+      /// @p body_force, with the tractions @p tractions and the contact
+      /// boundaries @p contact_ids; false if the Jacobian is not positive
+      /// at every quadrature point (an inverted or twisted cell, which
+      /// deal.II does not reject on reading).
+      bool
+      compute(const typename Triangulation<dim>::cell_iterator &cell,
+              const double                                      rho,
+              const Tensor<1, dim>                             &body_force,
+              const std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+                                                    &tractions,
+              const std::vector<types::boundary_id> &contact_ids)
+      {
+        mass             = 0.;
+        load             = 0.;
+        boundary_weights = 0.;
+        fe_values.reinit(cell);
+        mass_values.reinit(cell);
+        bool positive = true;
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          if (!(fe_values.JxW(q) > 0.))
+            positive = false;
+        volume_terms(rho, body_force);
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            face_terms(cell, f, tractions, contact_ids);
+        return positive;
+      }
+
+      FullMatrix<double> mass;
+      Vector<double>     load;
+      Vector<double>     boundary_weights;
+
+    private:
+      void
+      volume_terms(const double rho, const Tensor<1, dim> &body_force)
+      {
+        std::fill(scalar_load.begin(), scalar_load.end(), 0.);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            scalar_load[k] += fe_values.shape_value(k, q) * fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          load(i) = scalar_load[node[i]] * body_force[component[i]];
+
+        // (lumped: the element matrix is diagonal, only its diagonal is
+        // computed)
+        std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
+        for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            for (unsigned int l = (lumped_mass ? k : 0);
+                 l < (lumped_mass ? k + 1 : n_nodes);
+                 ++l)
+              scalar_mass[k * n_nodes + l] +=
+                rho * mass_values.shape_value(k, q) *
+                mass_values.shape_value(l, q) * mass_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = (lumped_mass ? i : 0);
+               j < (lumped_mass ? i + 1 : dofs_per_cell);
+               ++j)
+            if (component[i] == component[j])
+              mass(i, j) = scalar_mass[node[i] * n_nodes + node[j]];
+      }
+
+      void
+      face_terms(
+        const typename Triangulation<dim>::cell_iterator &cell,
+        const unsigned int                                f,
+        const std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+                                              &tractions,
+        const std::vector<types::boundary_id> &contact_ids)
+      {
+        const auto id = cell->face(f)->boundary_id();
+        for (const auto &[traction_id, traction] : tractions)
+          if (traction_id == id)
+            {
+              face_values.reinit(cell, f);
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  load(i) += face_values.shape_value(node[i], q) *
+                             traction[component[i]] * face_values.JxW(q);
+            }
+        if (std::find(contact_ids.begin(), contact_ids.end(), id) !=
+            contact_ids.end())
+          {
+            // w_p = int psi_p ds, by nodal quadrature (positive)
+            lumped_face_values.reinit(cell, f);
+            for (unsigned int q = 0; q < lumped_face_quadrature.size(); ++q)
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                boundary_weights(i) +=
+                  lumped_face_values.shape_value(node[i], q) *
+                  lumped_face_values.JxW(q);
+          }
+      }
+
+      const bool                   lumped_mass;
+      const QGauss<dim>            quadrature;
+      const Quadrature<dim>        mass_quadrature;
+      const QGauss<dim - 1>        face_quadrature;
+      const QGaussLobatto<dim - 1> lumped_face_quadrature;
+      FEValues<dim>                fe_values;
+      FEValues<dim>                mass_values;
+      FEFaceValues<dim>            face_values;
+      FEFaceValues<dim>            lumped_face_values;
+      const unsigned int           dofs_per_cell;
+      const unsigned int           n_nodes;
+      /// component and scalar shape function of each shape function
+      std::vector<unsigned int> component, node;
+      /// the scalar mass int phi_k phi_l and load int phi_k
+      std::vector<double> scalar_mass;
+      std::vector<double> scalar_load;
+    };
+
+
+
+    /// Stops with a message naming the inverted cell of some rank:
+    /// @p bad_cell holds its centre and body + 1, or nothing (collective).
+    template <int dim>
+    void
+    check_for_inverted_cells(const std::vector<double> &bad_cell,
+                             const MPI_Comm             comm)
+    {
+      for (const auto &rank_bad : Utilities::MPI::all_gather(comm, bad_cell))
+        if (!rank_bad.empty())
+          {
+            std::ostringstream where;
+            where << "(" << rank_bad[0];
+            for (unsigned int d = 1; d < dim; ++d)
+              where << ", " << rank_bad[d];
+            where << ")";
+            AssertThrow(false,
+                        ExcMessage("The mesh has an inverted or twisted cell "
+                                   "(non-positive Jacobian) at " +
+                                   where.str() + " in body " +
+                                   std::to_string(int(rank_bad[dim])) +
+                                   "; check the mesh (file) and the order of "
+                                   "the cell's vertices."));
+          }
+    }
+
+
+
+    /**
+     * The element matrix mu (2 eps : eps) + lambda (div div) of FE_Q^dim
+     * from the scalar gradients (a third of the work of the vector
+     * element's FEValues): with H^ab_kl = int d_a phi_k d_b phi_l,
+     *   2 mu eps(phi_k e_c) : eps(phi_l e_d) = mu (delta_cd sum_a H^aa_kl
+     *                                              + H^dc_kl),
+     *   div(phi_k e_c) div(phi_l e_d)        = H^cd_kl.
+     */
+    template <int dim>
+    class ElasticElement
+    {
+    public:
+      explicit ElasticElement(const FESystem<dim> &fe)
+        : n_nodes(fe.base_element(0).n_dofs_per_cell())
+        , gradient_products(dim * dim * n_nodes * n_nodes)
+        , laplace(n_nodes * n_nodes)
+        , gradients(n_nodes)
+      {
+        std::tie(component, node) = components_and_nodes(fe);
+      }
+
+      /// H and the scalar Laplacian sum_c H^cc_kl of the cell in
+      /// @p fe_values (of the scalar element, with gradients).
+      void
+      compute_products(const FEValues<dim> &fe_values)
+      {
+        std::fill(gradient_products.begin(), gradient_products.end(), 0.);
+        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+          {
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              gradients[k] = fe_values.shape_grad(k, q);
+            for (unsigned int c = 0; c < dim; ++c)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  double *H =
+                    &gradient_products[(c * dim + d) * n_nodes * n_nodes];
+                  for (unsigned int k = 0; k < n_nodes; ++k)
+                    {
+                      const double left = gradients[k][c] * JxW;
+                      for (unsigned int l = 0; l < n_nodes; ++l)
+                        H[k * n_nodes + l] += left * gradients[l][d];
+                    }
+                }
+          }
+        std::fill(laplace.begin(), laplace.end(), 0.);
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int kl = 0; kl < n_nodes * n_nodes; ++kl)
+            laplace[kl] +=
+              gradient_products[(c * dim + c) * n_nodes * n_nodes + kl];
+      }
+
+      /// @p matrix = the element matrix with the moduli @p mu, @p lambda.
+      void
+      fill(FullMatrix<double> &matrix,
+           const double        mu,
+           const double        lambda) const
+      {
+        const auto H = [&](const unsigned int c,
+                           const unsigned int d,
+                           const unsigned int k,
+                           const unsigned int l) {
+          return gradient_products[(c * dim + d) * n_nodes * n_nodes +
+                                   k * n_nodes + l];
+        };
+        for (unsigned int i = 0; i < component.size(); ++i)
+          {
+            const unsigned int c = component[i], k = node[i];
+            for (unsigned int j = 0; j < component.size(); ++j)
+              {
+                const unsigned int d = component[j], l = node[j];
+                const double       shear =
+                  (c == d ? laplace[k * n_nodes + l] : 0.) + H(d, c, k, l);
+                matrix(i, j) = mu * shear + lambda * H(c, d, k, l);
+              }
+          }
+      }
+
+    private:
+      const unsigned int n_nodes;
+      /// H^ab_kl at [(a * dim + b) * n_nodes * n_nodes + k * n_nodes + l]
+      std::vector<double>         gradient_products;
+      std::vector<double>         laplace;
+      std::vector<Tensor<1, dim>> gradients;
+      std::vector<unsigned int>   component, node;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
+  SemiDiscreteSystem<dim>::boundary_tractions(const Scene<dim> &scene) const
+  {
+    auto tractions = scene.neumann_tractions();
+    // loads given as total forces: spread over the boundary as the mesh
+    // represents it, so that they sum to the force exactly
+    const auto forces = scene.neumann_forces();
+    if (forces.empty())
+      return tractions;
+    const QGauss<dim - 1> face_quadrature(fe.degree + 1);
+    FEFaceValues<dim>     area_values(mapping,
+                                  fe,
+                                  face_quadrature,
+                                  update_JxW_values);
+    std::vector<double>   areas(forces.size(), 0.);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int k = 0; k < forces.size(); ++k)
+              if (cell->face(f)->boundary_id() == forces[k].first)
+                {
+                  area_values.reinit(cell, f);
+                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                    areas[k] += area_values.JxW(q);
+                }
+    Utilities::MPI::sum(areas, comm, areas);
+    for (unsigned int k = 0; k < forces.size(); ++k)
+      {
+        AssertThrow(areas[k] > 0.,
+                    ExcMessage("The scene loads boundary id " +
+                               std::to_string(forces[k].first) +
+                               " with a force, but no boundary face of "
+                               "the mesh has that id."));
+        tractions.emplace_back(forces[k].first, forces[k].second / areas[k]);
+      }
+    return tractions;
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::assemble(const Scene<dim> &scene)
+  {
+    const auto          tractions   = boundary_tractions(scene);
+    const auto          contact_ids = scene.all_contact_boundary_ids();
+    CellTerms<dim>      terms(mapping, fe, scalar_fe, parameters.lumped_mass);
+    std::vector<double> bad_cell; // centre and body of an inverted cell
+    Vector<double>      cell_lumped_mass(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+
+    materials.clear();
+    std::unique_ptr<ElementMatrixAdder> mass_adder;
+    if (!parameters.lumped_mass)
+      mass_adder = std::make_unique<ElementMatrixAdder>(mass_matrix);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Material &material =
+            materials
+              .emplace(cell->material_id(), scene.material(cell->material_id()))
+              .first->second;
+          const bool positive =
+            terms.compute(typename Triangulation<dim>::cell_iterator(cell),
+                          material.density,
+                          scene.body_force(cell->material_id()),
+                          tractions,
+                          contact_ids);
+          if (!positive && bad_cell.empty())
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                bad_cell.push_back(cell->center()[d]);
+              bad_cell.push_back(cell->material_id() + 1);
+            }
+          cell->get_dof_indices(dof_indices);
+          if (parameters.lumped_mass)
+            {
+              for (unsigned int i = 0; i < dof_indices.size(); ++i)
+                cell_lumped_mass(i) = terms.mass(i, i);
+              lumped_mass_diagonal.add(dof_indices, cell_lumped_mass);
+            }
+          else
+            mass_adder->add(dof_indices, terms.mass);
+          load.add(dof_indices, terms.load);
+          boundary_weights.add(dof_indices, terms.boundary_weights);
+        }
+
+    if (parameters.lumped_mass)
+      lumped_mass_diagonal.compress(VectorOperation::add);
+    else
+      mass_matrix.compress(VectorOperation::add);
+    check_for_inverted_cells<dim>(bad_cell, comm);
+    load.compress(VectorOperation::add);
+    boundary_weights.compress(VectorOperation::add);
+
+    elastic_operator.reinit(mapping, dof_handler, materials);
+    stiffness_product.reinit(
+      [this](VectorType &y, const VectorType &x) { stiffness_vmult(y, x); });
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::assemble_stiffness_matrix(MatrixType  &matrix,
+                                                     const double a,
+                                                     const double b,
+                                                     const double m) const
+  {
+    reinit_matrix(matrix);
+    // a lumped m M goes onto the diagonal in the first cell of each owned
+    // row (a locally owned DoF lies on a locally owned cell)
+    const bool lumped_mass_in_cells = (m != 0. && parameters.lumped_mass);
+    std::vector<bool> mass_added(
+      lumped_mass_in_cells ? locally_owned.n_elements() : 0, false);
+    const QGauss<dim>  quadrature(fe.degree + 1);
+    FEValues<dim>      fe_values(mapping,
+                            scalar_fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    ElasticElement<dim>                  element(fe);
+    bool                                 have_products = false;
+    // the element matrix a A + b B of the cell before, and its moduli
+    FullMatrix<double> element_matrix(dofs_per_cell, dofs_per_cell);
+    double             element_mu = 0., element_lambda = 0.;
+    ElementMatrixAdder adder(matrix);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Material &material = materials.at(cell->material_id());
+          // the moduli of a A + b B
+          const double mu = a * material.mu() +
+                            (b != 0. ? b * material.viscous_shear_modulus : 0.);
+          const double lambda = a * material.lambda() +
+                                (b != 0. ? b * material.viscous_lambda : 0.);
+          fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+
+          // a translation of the cell before has the same H (deal.II's
+          // FEValues recognises it on a mapping of degree 1), and with the
+          // same moduli the same element matrix
+          const bool same_products =
+            have_products &&
+            fe_values.get_cell_similarity() == CellSimilarity::translation;
+          if (!same_products)
+            element.compute_products(fe_values);
+          if (!same_products || mu != element_mu || lambda != element_lambda)
+            {
+              element.fill(element_matrix, mu, lambda);
+              element_mu     = mu;
+              element_lambda = lambda;
+            }
+          have_products = true;
+          cell_matrix   = element_matrix;
+          cell->get_dof_indices(dof_indices);
+          if (lumped_mass_in_cells)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              if (locally_owned.is_element(dof_indices[i]))
+                {
+                  const auto row =
+                    locally_owned.index_within_set(dof_indices[i]);
+                  if (!mass_added[row])
+                    {
+                      cell_matrix(i, i) +=
+                        m * lumped_mass_diagonal(dof_indices[i]);
+                      mass_added[row] = true;
+                    }
+                }
+          adder.add(dof_indices, cell_matrix);
+        }
+    matrix.compress(VectorOperation::add);
+    if (m != 0. && !parameters.lumped_mass)
+      matrix.add(m, mass_matrix);
+  }
+
+
+
+#define DYNCONTACT_INSTANTIATE(dim)                                      \
+  template std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>    \
+  SemiDiscreteSystem<dim>::boundary_tractions(const Scene<dim> &) const; \
+  template void SemiDiscreteSystem<dim>::assemble(const Scene<dim> &);   \
+  template void SemiDiscreteSystem<dim>::assemble_stiffness_matrix(      \
+    MatrixType &, const double, const double, const double) const;
+  DYNCONTACT_INSTANTIATE(2)
+  DYNCONTACT_INSTANTIATE(3)
+#undef DYNCONTACT_INSTANTIATE
+} // namespace dyncontact

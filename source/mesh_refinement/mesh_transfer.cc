@@ -1,0 +1,37 @@
+#include <dyncontact/mesh_refinement/mesh_transfer.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  void
+  MeshTransfer::add(const double energy, const double violation)
+  {
+    energy_change += energy;
+    penetration = std::max(penetration, violation);
+  }
+
+
+
+  void
+  MeshTransfer::save(std::map<std::string, std::string> &state) const
+  {
+    std::ostringstream s;
+    s << std::setprecision(17) << energy_change << " " << penetration;
+    state["mesh_transfer"] = s.str();
+  }
+
+
+
+  void
+  MeshTransfer::load(const std::map<std::string, std::string> &state)
+  {
+    std::istringstream s(state.at("mesh_transfer"));
+    std::string        energy, violation;
+    s >> energy >> violation;
+    energy_change = std::stod(energy);
+    penetration   = std::stod(violation);
+  }
+} // namespace dyncontact

@@ -1,0 +1,133 @@
+#include <deal.II/base/mpi.h>
+
+#include <dyncontact/base/global_parameters.h>
+#include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/output/run_report.h>
+#include <dyncontact/output/summary.h>
+#include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/simulation_control.h>
+#include <dyncontact/time_stepping/time_step_controller.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+  template <int dim>
+  std::string
+  RunReport<dim>::banner() const
+  {
+    const MPI_Comm                 comm       = this->get_mpi_communicator();
+    const SemiDiscreteSystem<dim> &system     = this->get_system();
+    const Scene<dim>              &scene      = this->get_scene();
+    const ContactSetup<dim>       &contact    = this->get_contact();
+    const TimeIntegrator          &integrator = this->get_integrator();
+    const SimulationControl       &control    = this->get_control();
+    const TimeStepController      &time_step_controller =
+      this->get_time_step_controller();
+    // DoFs per body
+    std::vector<types::global_dof_index> body_dofs;
+    for (const auto n : system.n_locally_owned_body_dofs())
+      body_dofs.push_back(Utilities::MPI::sum(n, comm));
+    std::ostringstream text;
+    text << std::setprecision(6) << "   bodies: " << body_dofs.size() << " (";
+    for (unsigned int b = 0; b < body_dofs.size(); ++b)
+      text << (b > 0 ? ", " : "") << "body " << b + 1 << ": " << body_dofs[b]
+           << " DoFs";
+    text << ")\n   contact: ";
+    if (!scene.has_contact())
+      text << "none (no rows, no contact search)";
+    else if (scene.obstacle())
+      text << "rigid obstacle (no contact search), " << contact.n_global_rows()
+           << " rows";
+    else
+      text << "two bodies through phi_h, " << contact.n_global_rows()
+           << " rows on the slave side";
+    text << "\n   material: "
+         << (system.is_viscous() ?
+               "viscoelastic (Kelvin-Voigt, viscous form B)" :
+               "elastic (no viscous form)")
+         << ", " << (system.matrices().lumped_mass() ? "lumped" : "consistent")
+         << " mass\n   solver: active set, CG with "
+         << (integrator.uses_amg() ? "AMG" : "Jacobi");
+    if (const double bound = integrator.condition_bound(); std::isfinite(bound))
+      text << " (condition number of S scaled by its diagonal at most "
+           << std::setprecision(3) << bound << std::setprecision(6) << ")";
+    text << "\n   time: ";
+    if (integrator.get_scheme().is_static)
+      text << "static problem (one solve)";
+    else if (time_step_controller.is_adaptive())
+      text << "scheme " << integrator.get_scheme().name << ", adaptive tau in ["
+           << time_step_controller.get_minimum_timestep() << ", "
+           << time_step_controller.get_maximum_timestep() << "] s, now "
+           << time_step_controller.get_timestep()
+           << " s, from t = " << control.get_time() << " to "
+           << control.get_end_time() << " s";
+    else
+      {
+        const double tau = time_step_controller.get_timestep();
+        const double n_steps =
+          std::ceil((control.get_end_time() - control.get_time()) / tau - 1e-9);
+        const double last = control.get_time() + n_steps * tau;
+        text << "scheme " << integrator.get_scheme().name << ", tau = " << tau
+             << " s, " << n_steps << " steps from t = " << control.get_time()
+             << " to " << last << " s";
+        if (last > control.get_end_time() + 1e-9 * tau)
+          text << "\n   warning: End time = " << control.get_end_time()
+               << " s is not reached in whole steps of Time step = " << tau
+               << " s: the last step ends at t = " << last
+               << " s. Choose End time as a multiple of Time step, or 'Time "
+                  "step control = adaptive' (its last step ends at End time).";
+      }
+    return text.str();
+  }
+
+
+
+  template <int dim>
+  void
+  RunReport<dim>::write_summary(const double       wall_time,
+                                const double       loop_wall_time,
+                                const unsigned int step_matrices) const
+  {
+    const TimeIntegrator     &integrator = this->get_integrator();
+    const TimeStepController &time_step_controller =
+      this->get_time_step_controller();
+    SummaryInput input;
+    input.dim       = dim;
+    input.is_static = integrator.get_scheme().is_static;
+    input.energy_tolerance =
+      integrator.get_operators().get_solver_parameters().energy_tolerance();
+    input.wall_time      = wall_time;
+    input.loop_wall_time = loop_wall_time;
+    input.section_wall_times =
+      this->get_timer().get_summary_data(TimerOutput::total_wall_time);
+    input.section_calls =
+      this->get_timer().get_summary_data(TimerOutput::n_calls);
+    input.adaptive_time_steps = time_step_controller.is_adaptive();
+    input.located_events      = time_step_controller.n_located_events();
+    input.repeated_steps      = time_step_controller.n_repeated_steps();
+    input.step_matrices       = step_matrices;
+    input.uses_amg            = integrator.uses_amg();
+    input.condition_bound     = integrator.condition_bound();
+    const std::string text    = summary_text(this->get_statistics(), input);
+    const std::string file =
+      this->get_parameters().output_directory + "/summary.txt";
+    if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) == 0)
+      {
+        std::ofstream out(file);
+        out << text;
+      }
+    this->get_pcout() << "\nSummary (also in " << file << "):\n"
+                      << text << std::flush;
+  }
+
+
+
+  template class RunReport<2>;
+  template class RunReport<3>;
+} // namespace dyncontact
