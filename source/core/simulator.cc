@@ -267,8 +267,16 @@ namespace dyncontact
                               controller_vectors);
     vtu_writer->load(state);
     mesh_transfer.load(state);
-    make_integrator();
-    integrator->load_active_sets(flags);
+    if (state.count("refinement_pending") &&
+        state.at("refinement_pending") == "1")
+      // the run ended on a step after which the mesh adapts: adapt now, as
+      // the uninterrupted run did (the active sets refer to the old mesh)
+      refine_mesh();
+    else
+      {
+        make_integrator();
+        integrator->load_active_sets(flags);
+      }
     if (time_step_controller.is_adaptive() &&
         state.count("step_matrices_built"))
       // those of the run before the checkpoint; make_integrator() above
@@ -348,6 +356,10 @@ namespace dyncontact
     postprocessors->save(state);
     mesh_transfer.save(state);
     vtu_writer->save(state);
+    // the last step of a run does not adapt the mesh: a resumed run does
+    state["refinement_pending"] =
+      moments.last && mesh_adaptor->refinement_due(control.get_step()) ? "1" :
+                                                                         "0";
     state["step_matrices_built"] = std::to_string(
       n_step_matrices + integrator->get_operators().n_step_matrices_built);
     checkpoints.finish(dir, state);

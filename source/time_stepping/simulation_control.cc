@@ -119,12 +119,14 @@ namespace dyncontact
     ++steps_since;
     time = is_static ? end_time : time_base + steps_since * tau;
 
+    // the last step is an output too, but the next output time moves on
+    // only when it is reached (a resumed run writes the same outputs)
     StepMoments moments;
     moments.last = !keep_going();
-    moments.output =
-      time >= next_output - 1e-9 * time_step_controller.get_timestep() ||
-      moments.last;
-    if (moments.output)
+    const bool reached =
+      time >= next_output - 1e-9 * time_step_controller.get_timestep();
+    moments.output = reached || moments.last;
+    if (reached)
       next_output += output_interval;
     moments.checkpoint = checkpoint_steps > 0 && step % checkpoint_steps == 0;
     if (checkpoint_minutes > 0.)
