@@ -170,9 +170,10 @@ namespace dyncontact
           sum += v;
       return sum;
     };
-    out << "iterations: active-set " << total("active_set_iterations")
-        << ", projection " << total("projection_iterations") << ", CG "
-        << total("linear_iterations") << "\n";
+    if (s.has_column("active_set_iterations"))
+      out << "iterations: active-set " << total("active_set_iterations")
+          << ", projection " << total("projection_iterations") << ", CG "
+          << total("linear_iterations") << "\n";
     out << "preconditioner: " << (input.uses_amg ? "AMG" : "Jacobi");
     if (std::isfinite(input.condition_bound))
       out << " (condition number of S scaled by its diagonal at most "

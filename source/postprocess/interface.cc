@@ -1,3 +1,4 @@
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
@@ -5,6 +6,7 @@
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/simulation_control.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -19,6 +21,22 @@ namespace dyncontact
     void
     Manager<dim>::declare_parameters(ParameterHandler &prm)
     {
+      std::string documentation;
+      for (const auto &info : PluginRegistry<Interface>::plugins())
+        documentation += (documentation.empty() ? "" : "; ") + info.name +
+                         ": " + info.description;
+      prm.enter_subsection("Postprocess");
+      prm.declare_entry(
+        "List of postprocessors",
+        "all",
+        Patterns::MultipleSelection("all|" +
+                                    PluginRegistry<Interface>::names("|")),
+        "The statistics (groups of columns of statistics.tsv) to compute, "
+        "comma-separated, or 'all': every one that applies to the run. A "
+        "statistic named here must apply (e.g. 'error energy norm' needs "
+        "a scene with an exact solution). " +
+          documentation + ".");
+      prm.leave_subsection();
       PluginRegistry<Interface>::declare_parameters(prm);
     }
 
@@ -28,12 +46,22 @@ namespace dyncontact
     void
     Manager<dim>::parse_parameters(ParameterHandler &prm)
     {
+      prm.enter_subsection("Postprocess");
+      const auto chosen =
+        Utilities::split_string_list(prm.get("List of postprocessors"));
+      prm.leave_subsection();
+      const bool all =
+        std::find(chosen.begin(), chosen.end(), "all") != chosen.end();
       postprocessors.clear();
+      listed.clear();
       for (const auto &info : PluginRegistry<Interface>::plugins())
-        {
-          postprocessors.push_back(info.template create<dim>());
-          postprocessors.back()->parse_parameters(prm);
-        }
+        if (all ||
+            std::find(chosen.begin(), chosen.end(), info.name) != chosen.end())
+          {
+            postprocessors.push_back(info.template create<dim>());
+            postprocessors.back()->parse_parameters(prm);
+            listed.push_back(all ? "" : info.name);
+          }
     }
 
 
@@ -46,9 +74,18 @@ namespace dyncontact
       std::vector<std::unique_ptr<Interface<dim>>> applicable;
       statistics.columns = {"step", "time"};
       sampled_columns    = {false, false};
-      for (auto &postprocessor : postprocessors)
+      for (unsigned int k = 0; k < postprocessors.size(); ++k)
         {
+          auto &postprocessor = postprocessors[k];
           postprocessor->initialize_simulator(simulator);
+          // one that is named in the list must apply
+          AssertThrow(listed[k].empty() || postprocessor->applies(),
+                      ExcMessage("Postprocess/List of postprocessors names '" +
+                                 listed[k] +
+                                 "', which does not apply to this run (see "
+                                 "its description in the parameter "
+                                 "documentation, e.g. dyncontact "
+                                 "--help)."));
           if (postprocessor->applies())
             {
               for (const auto &column : postprocessor->columns())

@@ -93,7 +93,8 @@ namespace dyncontact
 
 
     /**
-     * All statistics that apply, in the order of their positions: the table
+     * The statistics of Postprocess/List of postprocessors (all that apply,
+     * by default), in the order of their positions: the table
      * (step, time, then each postprocessor's columns) and statistics.tsv,
      * written and flushed after every step on rank 0.
      */
@@ -153,9 +154,12 @@ namespace dyncontact
 
     private:
       std::vector<std::unique_ptr<Interface<dim>>> postprocessors;
-      Statistics                                   statistics;
-      std::vector<bool>                            sampled_columns;
-      std::ofstream                                file;
+      /// The name of each postprocessor if 'List of postprocessors' named
+      /// it (it must apply), "" if it is there by 'all'.
+      std::vector<std::string> listed;
+      Statistics               statistics;
+      std::vector<bool>        sampled_columns;
+      std::ofstream            file;
     };
   } // namespace Postprocess
 

@@ -1,0 +1,81 @@
+// Postprocess/List of postprocessors switches statistics on and off: by
+// default ('all') every statistic that applies has its columns; a list
+// gives exactly the columns of the named statistics (in their usual order,
+// whatever the order of the list), with the same values as the default run;
+// an unknown name and a named statistic that does not apply to the run are
+// refused with a message naming them.
+
+#include "tests.h"
+
+namespace
+{
+  std::string
+  joined(const std::vector<std::string> &columns)
+  {
+    std::string text;
+    for (const auto &c : columns)
+      text += (text.empty() ? "" : " ") + c;
+    return text;
+  }
+
+  /// The message of the error @p prm stops with (deal.II wraps its
+  /// lines: every run of white space is one space here), or "".
+  std::string
+  error_of(const std::string &prm)
+  {
+    std::string message;
+    try
+      {
+        testing::run(prm);
+      }
+    catch (const std::exception &e)
+      {
+        std::istringstream words(e.what());
+        for (std::string word; words >> word;)
+          message += word + " ";
+      }
+    return message;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  auto prm = [](const std::string &list) {
+    return bar_prm(2, "N-CS++", 10, 0.05, 1.5) +
+           "set Output directory = results-list\n" +
+           (list.empty() ? std::string() :
+                           "subsection Postprocess\n"
+                           "  set List of postprocessors = " +
+                             list + "\nend\n");
+  };
+
+  const Statistics all = run(prm(""));
+  log() << "default: " << all.columns.size() << " columns, "
+        << check(all.has_column("error_energy_norm") &&
+                 all.has_column("momentum_x") && all.has_column("active_nodes"))
+        << "\n";
+
+  const Statistics some = run(prm("contact, energy"));
+  log() << "contact, energy: " << joined(some.columns) << "\n";
+  bool same = some.rows.size() == all.rows.size();
+  for (unsigned int c = 2; same && c < some.columns.size(); ++c)
+    same = some.column(some.columns[c]) == all.column(some.columns[c]);
+  log() << "  the same values as in the default run: " << check(same) << "\n";
+
+  const std::string unknown = error_of(prm("energie"));
+  log() << "an unknown name is refused, naming the entry: "
+        << check(unknown.find("List of postprocessors") != std::string::npos &&
+                 unknown.find("energie") != std::string::npos)
+        << "\n";
+
+  const std::string not_applying = error_of(prm("energy, mesh transfer"));
+  log() << "a statistic that does not apply (mesh transfer on a fixed mesh) "
+           "is refused, naming it: "
+        << check(not_applying.find("'mesh transfer'") != std::string::npos &&
+                 not_applying.find("does not apply") != std::string::npos)
+        << "\n";
+}
