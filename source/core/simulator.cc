@@ -4,6 +4,7 @@
 
 #include <dyncontact/base/input_checks.h>
 #include <dyncontact/base/memory_check.h>
+#include <dyncontact/base/vector_copy.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -407,8 +408,8 @@ namespace dyncontact
   TimeStepController::AcceptedStep
   Simulator<dim>::take_step()
   {
-    u_old    = u;
-    udot_old = udot;
+    copy_with_layout(u_old, u);
+    copy_with_layout(udot_old, udot);
     // where the step starts from: its active sets
     const auto start_sets = integrator->active_sets();
     time_step_controller.begin_step(control.get_time());

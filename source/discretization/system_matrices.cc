@@ -1,3 +1,4 @@
+#include <dyncontact/base/vector_copy.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -31,7 +32,7 @@ namespace dyncontact
     hit = (Utilities::MPI::min(hit ? 1 : 0, x.get_mpi_communicator()) == 1);
     if (!hit)
       {
-        x_last = x;
+        copy_with_layout(x_last, x);
         y_last.reinit(x, true);
         product(y_last, x);
         valid = true;

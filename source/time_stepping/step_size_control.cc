@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <dyncontact/base/vector_copy.h>
 #include <dyncontact/time_stepping/step_size_control.h>
 
 #include <algorithm>
@@ -148,8 +149,8 @@ namespace dyncontact
                           const double      eta,
                           const double      tolerance)
   {
-    n_small      = (has_history && eta < tolerance / 8.) ? n_small + 1 : 0;
-    acceleration = udot;
+    n_small = (has_history && eta < tolerance / 8.) ? n_small + 1 : 0;
+    copy_with_layout(acceleration, udot);
     acceleration -= udot_old;
     acceleration /= tau;
     previous_tau = tau;
