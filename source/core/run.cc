@@ -1,5 +1,6 @@
 #include <deal.II/base/parameter_handler.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/core/parameter_file.h>
 #include <dyncontact/core/run.h>
 #include <dyncontact/core/simulator.h>
@@ -42,29 +43,6 @@ namespace dyncontact
     declare_all_parameters(prm);
     prm.print_parameters(out, ParameterHandler::PRM);
   }
-
-
-
-  namespace
-  {
-    /// The message of an exception, without deal.II's file/line header.
-    std::string
-    message_of(const std::exception &e)
-    {
-      std::ostringstream s;
-      if (const auto *dealii_exception =
-            dynamic_cast<const ExceptionBase *>(&e))
-        dealii_exception->print_info(s);
-      else
-        s << e.what();
-      std::string text = s.str();
-      // trim leading and trailing white space
-      const auto first = text.find_first_not_of(" \n\t");
-      const auto last  = text.find_last_not_of(" \n\t");
-      return first == std::string::npos ? std::string("unknown error") :
-                                          text.substr(first, last - first + 1);
-    }
-  } // namespace
 
 
 

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <dyncontact/base/checksum.h>
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/output/checkpoint.h>
 
 #include <cstdio>
@@ -106,44 +107,56 @@ namespace dyncontact
   Checkpoints::finish(const std::string                        &dir,
                       const std::map<std::string, std::string> &state) const
   {
+    // rank 0 writes the state: what fails there stops every rank
+    std::string failure;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        // key, length, value: values may hold anything (lines, spaces);
-        // then the size and checksum of every other file, and the checksum
-        // of all of this
-        std::ostringstream text;
-        text << "dyncontact-checkpoint 3\n";
-        for (const auto &[key, value] : state)
-          text << key << " " << value.size() << "\n" << value << "\n";
-        text << "critical_parameters " << critical_parameters.size() << "\n"
-             << critical_parameters << "\n";
-        std::ostringstream files;
-        for (const auto &entry : std::filesystem::directory_iterator(dir))
-          if (entry.path().filename() != "state.txt")
-            files << entry.path().filename().string() << " "
-                  << entry.file_size() << " "
-                  << checksum_of_file(entry.path().string()) << "\n";
-        text << "files " << files.str().size() << "\n" << files.str() << "\n";
-        std::ofstream out(dir + "/state.txt");
-        out << text.str() << "checksum " << checksum_of_text(text.str())
-            << "\n";
-        out.close();
-        AssertThrow(out.good(),
-                    ExcMessage("Cannot write the checkpoint '" + dir + "'."));
-        // mark it as the last good checkpoint (atomically), then remove all
-        // but the previous one
-        const std::string name = std::filesystem::path(dir).filename();
-        std::string       previous;
-        if (std::ifstream last(root + "/last"); last.good())
-          std::getline(last, previous);
-        std::ofstream(root + "/last.tmp") << name << "\n";
-        std::filesystem::rename(root + "/last.tmp", root + "/last");
-        for (const auto &entry : std::filesystem::directory_iterator(root))
-          if (entry.is_directory() && entry.path().filename() != name &&
-              entry.path().filename() != previous)
-            std::filesystem::remove_all(entry.path());
-      }
-    MPI_Barrier(comm);
+      try
+        {
+          // key, length, value: values may hold anything (lines, spaces);
+          // then the size and checksum of every other file, and the checksum
+          // of all of this
+          std::ostringstream text;
+          text << "dyncontact-checkpoint 3\n";
+          for (const auto &[key, value] : state)
+            text << key << " " << value.size() << "\n" << value << "\n";
+          text << "critical_parameters " << critical_parameters.size() << "\n"
+               << critical_parameters << "\n";
+          std::ostringstream files;
+          for (const auto &entry : std::filesystem::directory_iterator(dir))
+            if (entry.path().filename() != "state.txt")
+              files << entry.path().filename().string() << " "
+                    << entry.file_size() << " "
+                    << checksum_of_file(entry.path().string()) << "\n";
+          text << "files " << files.str().size() << "\n" << files.str() << "\n";
+          std::ofstream out(dir + "/state.txt");
+          out << text.str() << "checksum " << checksum_of_text(text.str())
+              << "\n";
+          out.close();
+          AssertThrow(out.good(),
+                      ExcMessage("Cannot write the checkpoint '" + dir + "'."));
+          // mark it as the last good checkpoint (atomically), then remove all
+          // but the previous one
+          const std::string name = std::filesystem::path(dir).filename();
+          std::string       previous;
+          if (std::ifstream last(root + "/last"); last.good())
+            std::getline(last, previous);
+          std::ofstream last(root + "/last.tmp");
+          last << name << "\n";
+          last.close();
+          AssertThrow(last.good(),
+                      ExcMessage("Cannot write the checkpoint '" + dir +
+                                 "' (its mark " + root + "/last.tmp)."));
+          std::filesystem::rename(root + "/last.tmp", root + "/last");
+          for (const auto &entry : std::filesystem::directory_iterator(root))
+            if (entry.is_directory() && entry.path().filename() != name &&
+                entry.path().filename() != previous)
+              std::filesystem::remove_all(entry.path());
+        }
+      catch (const std::exception &e)
+        {
+          failure = message_of(e);
+        }
+    stop_with_message_of_rank_0(failure, comm);
   }
 
 

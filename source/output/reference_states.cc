@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/output/reference_states.h>
 
@@ -114,8 +115,13 @@ namespace dyncontact
         out.write(reinterpret_cast<const char *>(&index_), sizeof(index_));
         out.write(reinterpret_cast<const char *>(values), sizeof(values));
       }
-    AssertThrow(out.good(),
-                ExcMessage("Cannot write the reference state '" + file + "'."));
+    out.close();
+    // (on every rank: a rank that stopped alone would leave the others
+    // waiting)
+    stop_with_any_message(out.good() ?
+                            "" :
+                            "Cannot write the reference state '" + file + "'.",
+                          comm);
   }
 
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/base/global_parameters.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -10,6 +11,7 @@
 #include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -117,11 +119,17 @@ namespace dyncontact
     const std::string text    = summary_text(this->get_statistics(), input);
     const std::string file =
       this->get_parameters().output_directory + "/summary.txt";
+    std::string failure;
     if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) == 0)
       {
+        errno = 0;
         std::ofstream out(file);
         out << text;
+        out.close();
+        if (!out.good())
+          failure = write_failure(file);
       }
+    stop_with_message_of_rank_0(failure, this->get_mpi_communicator());
     this->get_pcout() << "\nSummary (also in " << file << "):\n"
                       << text << std::flush;
   }

@@ -3,6 +3,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/base/global_parameters.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -10,8 +11,10 @@
 #include <dyncontact/time_stepping/row_force.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 
@@ -228,7 +231,28 @@ namespace dyncontact
     // pieces are written.
     const unsigned int n_rounds =
       *std::max_element(pieces_of_rank.begin(), pieces_of_rank.end());
-    bool write_failed   = false;
+    // the first file this rank could not write, and why
+    std::string failure;
+    const auto  write_file =
+      [&](const std::string                         &name,
+          const std::function<void(std::ostream &)> &write) {
+        if (!failure.empty())
+          return;
+        errno = 0;
+        std::ofstream out(name);
+        if (out)
+          try
+            {
+              write(out);
+            }
+          catch (const ExceptionBase &)
+            {
+              out.setstate(std::ios::failbit);
+            }
+        out.close();
+        if (!out.good())
+          failure = write_failure(name);
+      };
     using cell_iterator = typename Triangulation<dim>::cell_iterator;
     for (unsigned int k = 0; k < n_rounds; ++k)
       {
@@ -285,13 +309,10 @@ namespace dyncontact
         data_out.build_patches(this->get_mapping(), system.get_fe().degree);
         data_out.set_flags(flags);
         if (mine)
-          {
-            std::ofstream file(
-              directory + "/" + base +
-              Utilities::int_to_string(my_first_piece + k, n_digits) + ".vtu");
-            data_out.write_vtu(file);
-            write_failed = write_failed || !file.good();
-          }
+          write_file(directory + "/" + base +
+                       Utilities::int_to_string(my_first_piece + k, n_digits) +
+                       ".vtu",
+                     [&](std::ostream &out) { data_out.write_vtu(out); });
         if (rank == 0 && k == 0)
           {
             // the record of all pieces: any piece's DataOut knows the fields
@@ -299,24 +320,21 @@ namespace dyncontact
             for (unsigned int i = 0; i < n_global_pieces; ++i)
               piece_names.push_back(
                 base + Utilities::int_to_string(i, n_digits) + ".vtu");
-            std::ofstream record(directory + "/" + pvtu);
-            data_out.write_pvtu_record(record, piece_names);
-            write_failed = write_failed || !record.good();
+            write_file(directory + "/" + pvtu, [&](std::ostream &out) {
+              data_out.write_pvtu_record(out, piece_names);
+            });
           }
       }
     // (on every rank: a rank that stopped alone would leave the others
     // waiting in the next collective call)
-    AssertThrow(!Utilities::MPI::logical_or(write_failed, comm),
-                ExcMessage(
-                  "Writing the VTU files '" + directory + "/" + base +
-                  "*.vtu' or their .pvtu record failed (disk full?)."));
+    stop_with_any_message(failure, comm);
     ++output_counter;
     pvd_records.emplace_back(time, pvtu);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        std::ofstream pvd(directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, pvd_records);
-      }
+      write_file(directory + "/solution.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, pvd_records);
+      });
+    stop_with_message_of_rank_0(failure, comm);
   }
 
 

@@ -2,11 +2,13 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/base/input_checks.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/simulation_control.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -105,13 +107,20 @@ namespace dyncontact
     void
     Manager<dim>::open_file(const std::string &name)
     {
-      if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) != 0)
-        return;
-      file.open(name);
-      statistics.write_header(file);
-      for (const auto &row : statistics.rows)
-        statistics.write_row(file, row);
-      file.flush();
+      file_name = name;
+      std::string failure;
+      if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) == 0)
+        {
+          errno = 0;
+          file.open(name);
+          statistics.write_header(file);
+          for (const auto &row : statistics.rows)
+            statistics.write_row(file, row);
+          file.flush();
+          if (!file.good())
+            failure = write_failure(name);
+        }
+      stop_with_message_of_rank_0(failure, this->get_mpi_communicator());
     }
 
 
@@ -148,11 +157,18 @@ namespace dyncontact
         row.insert(row.end(), v.begin(), v.end());
       Assert(row.size() == statistics.columns.size(), ExcInternalError());
       statistics.rows.push_back(row);
+      // (a statistics file that cannot be written stops the run on every
+      // rank)
+      std::string failure;
       if (file.is_open())
         {
+          errno = 0;
           statistics.write_row(file, row);
           file.flush();
+          if (!file.good())
+            failure = write_failure(file_name);
         }
+      stop_with_message_of_rank_0(failure, this->get_mpi_communicator());
     }
 
 

@@ -160,6 +160,7 @@ namespace dyncontact
       Statistics               statistics;
       std::vector<bool>        sampled_columns;
       std::ofstream            file;
+      std::string              file_name;
     };
   } // namespace Postprocess
 
