@@ -13,36 +13,6 @@
 
 #include "tests.h"
 
-namespace
-{
-  /// The largest difference of two tables (every column but the wall times,
-  /// relative to the column's largest value, at least 1e-2), or 1e300 if
-  /// their shapes differ.
-  double
-  difference(const dyncontact::Statistics &a, const dyncontact::Statistics &b)
-  {
-    if (a.rows.size() != b.rows.size() || a.columns != b.columns)
-      return 1e300;
-    double largest = 0.;
-    for (unsigned int c = 0; c < a.columns.size(); ++c)
-      if (a.columns[c] != "step_wall_time")
-        {
-          double scale = 1e-2, d = 0.;
-          for (unsigned int i = 0; i < a.rows.size(); ++i)
-            {
-              const double x = a.rows[i][c], y = b.rows[i][c];
-              scale = std::max(scale, std::abs(x));
-              if (std::isnan(x) != std::isnan(y))
-                d = 1e300;
-              else if (!std::isnan(x))
-                d = std::max(d, std::abs(x - y));
-            }
-          largest = std::max(largest, d / scale);
-        }
-    return largest;
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -110,7 +80,9 @@ main(int argc, char **argv)
       // against the uninterrupted run on the ranks of the first half
       const double d =
         rank == 0 ?
-          difference(first_on_one ? full_on_one : full_on_two, resumed) :
+          statistics_difference(first_on_one ? full_on_one : full_on_two,
+                                resumed)
+            .first :
           0.;
       std::cout << dir << ": largest difference " << d << std::endl;
       log() << (first_on_one ? "1 rank, resumed on 2" : "2 ranks, resumed on 1")

@@ -205,6 +205,47 @@ namespace testing
     return values;
   }
 
+  /**
+   * The largest difference between the statistics @p a and @p b and its
+   * column: every column but the wall times, each relative to its largest
+   * value but at least 1e-2 (the physical scale of the tests: columns that
+   * are zero up to round-off, or small differences of large quantities,
+   * are compared to it). A column sampled in other rows (nan in one table,
+   * a value in the other) differs by 1e300, except in row @p sampled_row
+   * where only @p b has a value (the last step of a run that stopped
+   * there); so do tables of other shapes.
+   */
+  inline std::pair<double, std::string>
+  statistics_difference(
+    const Statistics  &a,
+    const Statistics  &b,
+    const unsigned int sampled_row = dealii::numbers::invalid_unsigned_int)
+  {
+    if (a.rows.size() != b.rows.size() || a.columns != b.columns)
+      return {1e300, "the shape"};
+    std::pair<double, std::string> largest = {0., ""};
+    for (unsigned int k = 0; k < a.columns.size(); ++k)
+      if (a.columns[k] != "step_wall_time")
+        {
+          double scale = 1e-2, d = 0.;
+          for (unsigned int i = 0; i < a.rows.size(); ++i)
+            {
+              const double x = a.rows[i][k], y = b.rows[i][k];
+              scale = std::max(scale, std::abs(x));
+              if (std::isnan(x) != std::isnan(y))
+                {
+                  if (!(i == sampled_row && std::isnan(x)))
+                    d = 1e300;
+                }
+              else if (!std::isnan(x))
+                d = std::max(d, std::abs(x - y));
+            }
+          if (d / scale > largest.first)
+            largest = {d / scale, a.columns[k]};
+        }
+    return largest;
+  }
+
   struct Outcome
   {
     int         status;
