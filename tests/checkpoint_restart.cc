@@ -19,16 +19,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace testing;
 
-  const std::string adaptive = scene_prm("two bars",
-                                         "    set Cells across = 1\n"
-                                         "    set Cells across body 2 = 2\n") +
-                               "subsection Mesh refinement\n"
-                               "  set Refinement interval = 4\n"
-                               "  set Maximum level = 2\n"
-                               "  set Refine fraction = 0.3\n"
-                               "  set Coarsen fraction = 0.1\n"
-                               "  set Criteria = kelly velocity, contact zone\n"
-                               "end\n";
+  const std::string adaptive = adaptive_two_bars_prm();
   // a resume at half time; one at a step after which the mesh adapts (the
   // last step of the first run, where it does not); one at a step that is
   // no output time, where the error norm is sampled at output times

@@ -25,16 +25,7 @@ main(int argc, char **argv)
   MPI_Comm one_rank;
   MPI_Comm_split(MPI_COMM_WORLD, rank == 0 ? 0 : MPI_UNDEFINED, 0, &one_rank);
 
-  const std::string extra = scene_prm("two bars",
-                                      "    set Cells across = 1\n"
-                                      "    set Cells across body 2 = 2\n") +
-                            "subsection Mesh refinement\n"
-                            "  set Refinement interval = 4\n"
-                            "  set Maximum level = 2\n"
-                            "  set Refine fraction = 0.3\n"
-                            "  set Coarsen fraction = 0.1\n"
-                            "  set Criteria = kelly velocity, contact zone\n"
-                            "end\n"
+  const std::string extra = adaptive_two_bars_prm() +
                             "subsection Time integration\n"
                             "  set Time step control = adaptive\n"
                             "end\n";

@@ -246,6 +246,24 @@ namespace testing
     return largest;
   }
 
+  /// The two bars (1 and 2 cells across) on a mesh adapted every 4 steps
+  /// by the velocity's Kelly indicator and the contact zone: the extra
+  /// entries for bar_prm() of the adaptive resume tests.
+  inline std::string
+  adaptive_two_bars_prm()
+  {
+    return scene_prm("two bars",
+                     "    set Cells across = 1\n"
+                     "    set Cells across body 2 = 2\n") +
+           "subsection Mesh refinement\n"
+           "  set Refinement interval = 4\n"
+           "  set Maximum level = 2\n"
+           "  set Refine fraction = 0.3\n"
+           "  set Coarsen fraction = 0.1\n"
+           "  set Criteria = kelly velocity, contact zone\n"
+           "end\n";
+  }
+
   struct Outcome
   {
     int         status;

@@ -1,16 +1,11 @@
-#include <deal.II/base/array_view.h>
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_index_access.h>
 
 #include <dyncontact/contact/active_set_solver.h>
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 namespace dyncontact
 {
@@ -159,14 +154,15 @@ namespace dyncontact
                                        const VectorType        &r,
                                        const double             r_norm,
                                        VectorType              &v,
-                                       Result                  &result) const
+                                       Result                  &result,
+                                       Scratch                 &scratch) const
   {
     AffineConstraints<double> constraints, homogeneous;
     make_constraints(active, constraints, false);
     make_constraints(active, homogeneous, true);
 
     // k: the inhomogeneities (v = T x + k)
-    VectorType k(r), b(r), x(r);
+    VectorType &k = scratch.k, &b = scratch.b, &x = scratch.x;
     k = 0.;
     constraints.distribute(k);
 
@@ -251,7 +247,8 @@ namespace dyncontact
                                        const bool               any_active,
                                        const VectorType        &r,
                                        const VectorType        &v,
-                                       std::vector<double> &multipliers) const
+                                       std::vector<double>     &multipliers,
+                                       Scratch                 &scratch) const
   {
     // from the residual r - H v at the slave nodes
     if (!any_active)
@@ -259,7 +256,7 @@ namespace dyncontact
         std::fill(multipliers.begin(), multipliers.end(), 0.);
         return;
       }
-    VectorType residual(r);
+    VectorType &residual = scratch.residual;
     vmult_H(residual, v);
     residual.sadd(-1., 1., r);
     const VectorType &ghosted = row_operator.with_row_ghosts(residual);
@@ -323,6 +320,7 @@ namespace dyncontact
     // the local part of every active set visited so far (to detect cycling)
     std::vector<std::vector<char>> visited;
     const double                   r_norm = r.l2_norm();
+    Scratch                        scratch(r);
 
     for (result.iterations = 1;; ++result.iterations)
       {
@@ -331,9 +329,10 @@ namespace dyncontact
           Utilities::MPI::max(
             std::find(active.begin(), active.end(), 1) != active.end() ? 1 : 0,
             comm) == 1;
-        if (!solve_on_active_set(active, any_active, r, r_norm, v, result))
+        if (!solve_on_active_set(
+              active, any_active, r, r_norm, v, result, scratch))
           return result;
-        compute_multipliers(active, any_active, r, v, multipliers);
+        compute_multipliers(active, any_active, r, v, multipliers, scratch);
 
         // new active set: mu_p + c_p (C v - g)_p > 0
         // (a displacement tolerance delta keeps round-off from flipping rows

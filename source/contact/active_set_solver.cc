@@ -1,8 +1,6 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
 #include <dyncontact/contact/active_set_solver.h>

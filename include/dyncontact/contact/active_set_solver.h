@@ -239,6 +239,18 @@ namespace dyncontact
     transpose_distribute(const AffineConstraints<double> &homogeneous,
                          VectorType                      &z) const;
 
+    /// The vectors of the active-set iteration, made once per solve().
+    struct Scratch
+    {
+      explicit Scratch(const VectorType &r)
+        : k(r)
+        , b(r)
+        , x(r)
+        , residual(r)
+      {}
+      VectorType k, b, x, residual;
+    };
+
     /// One equality-constrained solve of the active-set iteration: v with
     /// the rows of @p active as equalities (CG on the condensed system,
     /// warm started from v). False (with the result's status set) if CG
@@ -249,7 +261,8 @@ namespace dyncontact
                         const VectorType        &r,
                         const double             r_norm,
                         VectorType              &v,
-                        Result                  &result) const;
+                        Result                  &result,
+                        Scratch                 &scratch) const;
 
     /// The multipliers of the active rows, from the residual r - H v.
     void
@@ -257,7 +270,8 @@ namespace dyncontact
                         const bool               any_active,
                         const VectorType        &r,
                         const VectorType        &v,
-                        std::vector<double>     &multipliers) const;
+                        std::vector<double>     &multipliers,
+                        Scratch                 &scratch) const;
 
     /// Against cycling: @p new_active becomes @p active with only the row
     /// (over all ranks) that violates its condition the most changed.
