@@ -3,6 +3,7 @@
 #include <dyncontact/base/statistics.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 
 namespace dyncontact
@@ -48,5 +49,36 @@ namespace dyncontact
     for (unsigned int c = 0; c < row.size(); ++c)
       out << (c == 0 ? "" : "\t") << row[c];
     out << '\n';
+  }
+
+  unsigned int
+  Statistics::row_of_largest(const std::string &name) const
+  {
+    const std::vector<double> v    = column(name);
+    unsigned int              best = 0;
+    for (unsigned int r = 0; r < v.size(); ++r)
+      if (!std::isnan(v[r]) && (std::isnan(v[best]) || v[r] > v[best]))
+        best = r;
+    return best;
+  }
+
+  unsigned int
+  Statistics::row_of_last_value(const std::string &name) const
+  {
+    const std::vector<double> v = column(name);
+    for (unsigned int r = v.size(); r > 0; --r)
+      if (!std::isnan(v[r - 1]))
+        return r - 1;
+    return v.size() - 1;
+  }
+
+  double
+  Statistics::sum(const std::string &name) const
+  {
+    double sum = 0.;
+    if (has_column(name))
+      for (const double v : column(name))
+        sum += v;
+    return sum;
   }
 } // namespace dyncontact

@@ -178,10 +178,7 @@ namespace dyncontact
 
     // warm start: the previous iterate, constrained entries zero
     x = v;
-    for (const auto &line : homogeneous.get_lines())
-      if (locally_owned.is_element(line.index))
-        x(line.index) = 0.;
-    x.compress(VectorOperation::insert);
+    zero_constrained(homogeneous, x);
 
     const double tolerance =
       std::max(parameters.linear_tolerance * std::max(b.l2_norm(), r_norm),
@@ -207,17 +204,7 @@ namespace dyncontact
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
-        if (solver->amg)
-          solver->amg->vmult(dst, src);
-        else
-          {
-            dst = src;
-            dst.scale(solver->inverse_diagonal);
-          }
-        for (const auto &line : homogeneous->get_lines())
-          if (solver->locally_owned.is_element(line.index))
-            dst(line.index) = 0.;
-        dst.compress(VectorOperation::insert);
+        solver->precondition_condensed(*homogeneous, dst, src);
       }
     } preconditioner{this, &homogeneous};
 
@@ -303,6 +290,68 @@ namespace dyncontact
 
 
 
+  void
+  ActiveSetSolver::zero_constrained(
+    const AffineConstraints<double> &homogeneous,
+    VectorType                      &x) const
+  {
+    for (const auto &line : homogeneous.get_lines())
+      if (locally_owned.is_element(line.index))
+        x(line.index) = 0.;
+    x.compress(VectorOperation::insert);
+  }
+
+
+
+  void
+  ActiveSetSolver::precondition_condensed(
+    const AffineConstraints<double> &homogeneous,
+    VectorType                      &y,
+    const VectorType                &x) const
+  {
+    if (amg)
+      amg->vmult(y, x);
+    else
+      {
+        y = x;
+        y.scale(inverse_diagonal);
+      }
+    zero_constrained(homogeneous, y);
+  }
+
+
+
+  std::vector<char>
+  ActiveSetSolver::next_active_set(const VectorType          &v,
+                                   const std::vector<double> &multipliers,
+                                   const std::vector<double> &violation,
+                                   double                    &delta,
+                                   Result                    &result) const
+  {
+    double scale = 0.;
+    for (const ContactRow &row : rows->rows)
+      scale = std::max(scale, std::abs(row.gap));
+    scale = std::max(Utilities::MPI::max(scale, comm), v.linfty_norm());
+    delta = 1e-11 * scale;
+    std::vector<char> new_active(rows->size(), 0);
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      new_active[p] = (multipliers[p] + row_scaling[p] * violation[p] >
+                       row_scaling[p] * delta) ?
+                        1 :
+                        0;
+
+    result.residual = 0.;
+    for (unsigned int p = 0; p < rows->size(); ++p)
+      result.residual =
+        std::max(result.residual,
+                 std::abs(
+                   std::min(multipliers[p] / row_scaling[p], -violation[p])));
+    result.residual = Utilities::MPI::max(result.residual, comm);
+    return new_active;
+  }
+
+
+
   ActiveSetSolver::Result
   ActiveSetSolver::solve(const VectorType    &r,
                          VectorType          &v,
@@ -334,29 +383,10 @@ namespace dyncontact
           return result;
         compute_multipliers(active, any_active, r, v, multipliers, scratch);
 
-        // new active set: mu_p + c_p (C v - g)_p > 0
-        // (a displacement tolerance delta keeps round-off from flipping rows
-        // that sit exactly on the constraint)
         const std::vector<double> violation = row_operator.constraint_values(v);
-        double                    scale     = 0.;
-        for (const ContactRow &row : rows->rows)
-          scale = std::max(scale, std::abs(row.gap));
-        scale = std::max(Utilities::MPI::max(scale, comm), v.linfty_norm());
-        const double      delta = 1e-11 * scale;
-        std::vector<char> new_active(rows->size(), 0);
-        for (unsigned int p = 0; p < rows->size(); ++p)
-          new_active[p] = (multipliers[p] + row_scaling[p] * violation[p] >
-                           row_scaling[p] * delta) ?
-                            1 :
-                            0;
-
-        result.residual = 0.;
-        for (unsigned int p = 0; p < rows->size(); ++p)
-          result.residual =
-            std::max(result.residual,
-                     std::abs(std::min(multipliers[p] / row_scaling[p],
-                                       -violation[p])));
-        result.residual = Utilities::MPI::max(result.residual, comm);
+        double                    delta;
+        std::vector<char>         new_active =
+          next_active_set(v, multipliers, violation, delta, result);
         // converged: the active set is unchanged, or it still changes only
         // on degenerate rows (touching with zero force) while the
         // complementarity conditions hold to the displacement tolerance

@@ -115,6 +115,107 @@ namespace dyncontact
         received.insert(received.end(), rank_faces.begin(), rank_faces.end());
       return received;
     }
+
+
+
+    /// Step 1 of closest_faces(): each of the @p points goes to the ranks
+    /// whose faces' box is not farther than the least MINMAXDIST of the
+    /// boxes (some face lies that near). Fills @p requests with the
+    /// coordinates for each rank and @p asked with the numbers of the
+    /// points sent to it. Collective.
+    template <int dim>
+    void
+    request_nearest_ranks(
+      const std::vector<MasterFace<dim>>                &faces,
+      const std::vector<Point<dim>>                     &points,
+      const MPI_Comm                                     comm,
+      std::map<unsigned int, std::vector<double>>       &requests,
+      std::map<unsigned int, std::vector<unsigned int>> &asked)
+    {
+      const auto rank_tree = pack_rtree(rank_boxes(faces, comm));
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          const Point<dim>                                      &x = points[i];
+          std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
+          rank_tree.query(boost::geometry::index::nearest(x, 1),
+                          std::back_inserter(nearest));
+          if (nearest.empty())
+            break; // no rank has faces
+          // MINMAXDIST with a margin for round-off (relative to the distance
+          // and to the box: a point on a degenerate box, a flat surface)
+          auto bound_of = [&x](const BoundingBox<dim> &box) {
+            const auto [lower, upper] = box.get_boundary_points();
+            return min_max_distance(box, x) * (1. + 1e-12) +
+                   1e-12 * lower.distance(upper);
+          };
+          double bound = bound_of(nearest[0].first);
+          std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+          rank_tree.query(boost::geometry::index::intersects(
+                            search_box(x, bound)),
+                          std::back_inserter(hits));
+          for (const auto &hit : hits)
+            bound = std::min(bound, bound_of(hit.first));
+          for (const auto &hit : hits)
+            if (box_distance(hit.first, x) <= bound)
+              {
+                requests[hit.second].insert(requests[hit.second].end(),
+                                            x.begin_raw(),
+                                            x.end_raw());
+                asked[hit.second].push_back(i);
+              }
+        }
+    }
+
+
+
+    /// The ContactMapping of this rank's @p faces, built in @p local on
+    /// first use (only on a rank that is asked).
+    template <int dim>
+    ContactMapping<dim> *
+    local_mapping(std::unique_ptr<ContactMapping<dim>> &local,
+                  const std::vector<MasterFace<dim>>   &faces)
+    {
+      if (!local)
+        local = std::make_unique<ContactMapping<dim>>(faces, 0.);
+      return local.get();
+    }
+
+
+
+    /// Step 2 of closest_faces(): each rank answers the @p requests with
+    /// the distance to its closest face, and keeps the points it received
+    /// in @p received_points for step 3. Returns the least distance of each
+    /// of the @p points (those @p asked of the ranks). Collective.
+    template <int dim>
+    std::vector<double>
+    least_distances(
+      const std::vector<MasterFace<dim>>                &faces,
+      const std::vector<Point<dim>>                     &points,
+      const std::map<unsigned int, std::vector<double>> &requests,
+      std::map<unsigned int, std::vector<unsigned int>> &asked,
+      const MPI_Comm                                     comm,
+      std::unique_ptr<ContactMapping<dim>>              &local,
+      std::map<unsigned int, std::vector<Point<dim>>>   &received_points)
+    {
+      std::map<unsigned int, std::vector<double>> distances;
+      for (const auto &[rank, coordinates] :
+           Utilities::MPI::some_to_some(comm, requests))
+        for (std::size_t i = 0; i + dim <= coordinates.size(); i += dim)
+          {
+            Point<dim> x;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = coordinates[i + d];
+            received_points[rank].push_back(x);
+            distances[rank].push_back(local_mapping(local, faces)->distance(x));
+          }
+      std::vector<double> least(points.size(),
+                                std::numeric_limits<double>::infinity());
+      for (const auto &[rank, answer] :
+           Utilities::MPI::some_to_some(comm, distances))
+        for (unsigned int k = 0; k < answer.size(); ++k)
+          least[asked[rank][k]] = std::min(least[asked[rank][k]], answer[k]);
+      return least;
+    }
   } // namespace
 
 
@@ -127,68 +228,17 @@ namespace dyncontact
   {
     // 1. each point goes to the ranks whose faces' box is not farther than
     // the least MINMAXDIST of the boxes (some face lies that near)
-    const auto rank_tree = pack_rtree(rank_boxes(faces, comm));
     std::map<unsigned int, std::vector<double>>       requests;
     std::map<unsigned int, std::vector<unsigned int>> asked; // point numbers
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const Point<dim>                                      &x = points[i];
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> nearest;
-        rank_tree.query(boost::geometry::index::nearest(x, 1),
-                        std::back_inserter(nearest));
-        if (nearest.empty())
-          break; // no rank has faces
-        // MINMAXDIST with a margin for round-off (relative to the distance
-        // and to the box: a point on a degenerate box, a flat surface)
-        auto bound_of = [&x](const BoundingBox<dim> &box) {
-          const auto [lower, upper] = box.get_boundary_points();
-          return min_max_distance(box, x) * (1. + 1e-12) +
-                 1e-12 * lower.distance(upper);
-        };
-        double bound = bound_of(nearest[0].first);
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-        rank_tree.query(boost::geometry::index::intersects(
-                          search_box(x, bound)),
-                        std::back_inserter(hits));
-        for (const auto &hit : hits)
-          bound = std::min(bound, bound_of(hit.first));
-        for (const auto &hit : hits)
-          if (box_distance(hit.first, x) <= bound)
-            {
-              requests[hit.second].insert(requests[hit.second].end(),
-                                          x.begin_raw(),
-                                          x.end_raw());
-              asked[hit.second].push_back(i);
-            }
-      }
+    request_nearest_ranks(faces, points, comm, requests, asked);
 
     // 2. each rank answers with the distance to its closest face, and keeps
     // the points for step 3
     // (built only on a rank that is asked)
-    std::unique_ptr<ContactMapping<dim>> local;
-    auto                                 local_mapping = [&]() {
-      if (!local)
-        local = std::make_unique<ContactMapping<dim>>(faces, 0.);
-      return local.get();
-    };
+    std::unique_ptr<ContactMapping<dim>>            local;
     std::map<unsigned int, std::vector<Point<dim>>> received_points;
-    std::map<unsigned int, std::vector<double>>     distances;
-    for (const auto &[rank, coordinates] :
-         Utilities::MPI::some_to_some(comm, requests))
-      for (std::size_t i = 0; i + dim <= coordinates.size(); i += dim)
-        {
-          Point<dim> x;
-          for (unsigned int d = 0; d < dim; ++d)
-            x[d] = coordinates[i + d];
-          received_points[rank].push_back(x);
-          distances[rank].push_back(local_mapping()->distance(x));
-        }
-    std::vector<double> least(points.size(),
-                              std::numeric_limits<double>::infinity());
-    for (const auto &[rank, answer] :
-         Utilities::MPI::some_to_some(comm, distances))
-      for (unsigned int k = 0; k < answer.size(); ++k)
-        least[asked[rank][k]] = std::min(least[asked[rank][k]], answer[k]);
+    const std::vector<double>                       least = least_distances(
+      faces, points, requests, asked, comm, local, received_points);
 
     // 3. the same ranks get the least distance of each point and answer
     // with their faces that near
@@ -205,7 +255,7 @@ namespace dyncontact
         const auto &x = received_points[rank];
         for (unsigned int k = 0; k < bounds.size(); ++k)
           for (const unsigned int f :
-               local_mapping()->faces_within(x[k], bounds[k]))
+               local_mapping(local, faces)->faces_within(x[k], bounds[k]))
             marked[f] = true;
       }
     return exchange_faces(faces, wanted, comm);

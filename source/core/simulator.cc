@@ -1,10 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/utilities.h>
 
 #include <dyncontact/base/input_checks.h>
-#include <dyncontact/base/memory_check.h>
-#include <dyncontact/base/vector_copy.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -17,10 +14,8 @@
 #include <dyncontact/scenes/interface.h>
 
 #include <algorithm>
-#include <cmath>
-#include <fstream>
+#include <cstdlib>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -33,7 +28,6 @@ namespace dyncontact
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , control(comm, time_step_controller)
     , scheme(TimeIntegrator::parse_scheme(prm))
-    , triangulation(comm)
   {
     parameters.parse_parameters(prm);
     parameters.input_directory = input_directory;
@@ -41,15 +35,8 @@ namespace dyncontact
     time_step_controller.parse_parameters(prm,
                                           scheme.is_static,
                                           control.get_end_time());
-    solver_parameters.parse_parameters(prm);
-    typename SemiDiscreteSystem<dim>::Parameters system_parameters;
-    system_parameters.parse_parameters(prm);
-    system = std::make_unique<SemiDiscreteSystem<dim>>(system_parameters,
-                                                       mapping,
-                                                       comm);
-    typename ContactSetup<dim>::Parameters contact_parameters;
-    contact_parameters.parse_parameters(prm);
-    contact = std::make_unique<ContactSetup<dim>>(contact_parameters, comm);
+    problem = std::make_unique<DiscreteProblem<dim>>(
+      prm, scheme, time_step_controller, pcout, comm);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
     vtu_writer = std::make_unique<VtuWriter<dim>>();
@@ -63,7 +50,7 @@ namespace dyncontact
     progress_parameters.parse_parameters(prm);
     progress = std::make_unique<Progress>(progress_parameters, pcout);
     scene    = create_scene<dim>(prm, input_directory);
-    contact->check(*scene);
+    problem->get_contact().check(*scene);
     if (!scene->input_checksum().empty())
       checkpoints.add_critical_parameter(scene->subsection() +
                                            "/(checksum of the input files)",
@@ -91,122 +78,34 @@ namespace dyncontact
 
   template <int dim>
   void
-  Simulator<dim>::build_mesh()
-  {
-    TimerOutput::Scope t(*timer, "setup: mesh");
-    dyncontact::build_mesh(*scene,
-                           triangulation,
-                           parameters.initial_refinements,
-                           system->get_fe().degree,
-                           checkpoints.resume());
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::setup_discretization()
-  {
-    {
-      TimerOutput::Scope t(*timer, "setup: DoFs and sparsity");
-      system->setup(triangulation, *scene);
-      // the dynamic sparsity pattern's rows
-      release_freed_memory();
-      pcout << "   cells: " << triangulation.n_global_active_cells()
-            << ", DoFs: " << system->get_dof_handler().n_dofs() << std::endl;
-    }
-    {
-      TimerOutput::Scope t(*timer, "assembly");
-      system->assemble(*scene);
-    }
-    TimerOutput::Scope t(*timer, "contact rows");
-    contact->setup(*scene, *system, mapping, pcout);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::make_integrator()
-  {
-    TimerOutput::Scope t(*timer, "setup: step matrix and preconditioner");
-    if (integrator)
-      n_step_matrices += integrator->get_operators().n_step_matrices_built;
-    ActiveSetSolver::NearNullSpace near_null_space;
-    near_null_space.translations = system->get_constant_modes();
-    if (solver_parameters.amg_rotations)
-      near_null_space.rotations = system->rotation_modes();
-    integrator =
-      std::make_unique<TimeIntegrator>(scheme,
-                                       time_step_controller.get_timestep(),
-                                       system->matrices(),
-                                       solver_parameters,
-                                       system->locally_owned_dofs(),
-                                       system->locally_relevant_dofs(),
-                                       system->get_constraints(),
-                                       contact->get_rows(),
-                                       near_null_space,
-                                       comm);
-    // ML's temporaries
-    release_freed_memory();
-    check_inertia();
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::check_inertia()
-  {
-    if (warned_inertia)
-      return;
-    const std::string warning = integrator->inertia_warning();
-    warned_inertia            = !warning.empty();
-    pcout << warning;
-  }
-
-
-
-  template <int dim>
-  void
   Simulator<dim>::start()
   {
-    setup_discretization();
+    DiscreteProblem<dim> &p = *problem;
+    p.setup(*scene, *timer);
     // before t = 0: refine the contact zone of the initial state
     for (unsigned int k = 0; k < mesh_adaptor->n_initial_refinements(); ++k)
       {
-        system->interpolate_initial_values(*scene, u, udot);
+        p.get_system().interpolate_initial_values(*scene, p.u, p.udot);
         mesh_adaptor->mark_contact_zone();
-        triangulation.execute_coarsening_and_refinement();
-        setup_discretization();
+        p.triangulation.execute_coarsening_and_refinement();
+        p.setup(*scene, *timer);
       }
-    system->interpolate_initial_values(*scene, u, udot);
-    time_step_controller.reset(contact->get_rows().size());
-    make_integrator();
-
-    // an initially penetrating configuration (allowed only with 'Initial
-    // penetration = project'): the M-projection onto K_h
-    double largest = 0.;
-    for (const double v : contact->get_row_operator().constraint_values(u))
-      largest = std::max(largest, v);
-    largest = Utilities::MPI::max(largest, comm);
-    if (largest > 1e-12)
-      {
-        integrator->project_onto_constraints(u);
-        pcout << "   warning: the initial configuration penetrated by up to "
-              << largest << " m; the initial displacement was projected onto "
-              << "K_h." << std::endl;
-      }
+    p.get_system().interpolate_initial_values(*scene, p.u, p.udot);
+    time_step_controller.reset(p.get_contact().get_rows().size());
+    p.make_integrator(*timer);
+    p.project_initial_penetration();
     {
       TimerOutput::Scope t(*timer, "time step");
-      report =
-        integrator->initialize(time_step_controller.get_timestep(), u, udot);
+      p.report =
+        p.get_integrator().initialize(time_step_controller.get_timestep(),
+                                      p.u,
+                                      p.udot);
     }
-    AssertThrow(report.converged(),
+    AssertThrow(p.report.converged(),
                 ExcMessage("The initial velocity of " + scheme.name +
                            " (eq. 12c) could not be computed: " +
-                           report.failure() + "."));
-    initial_report = report;
+                           p.report.failure() + "."));
+    p.initial_report = p.report;
     record_statistics();
   }
 
@@ -219,20 +118,13 @@ namespace dyncontact
     postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
     if (vtu_writer->is_enabled() && !checkpoints.resume())
       {
-        // the initial state: after a first step u_old, udot_old and the
-        // initial report
+        // the initial state: after a first step, the start of that step
         const bool after_step = control.get_step() > 0;
-        auto       swap_state = [&]() {
-          if (after_step)
-            {
-              std::swap(u, u_old);
-              std::swap(udot, udot_old);
-              std::swap(report, initial_report);
-            }
-        };
-        swap_state();
+        if (after_step)
+          problem->swap_with_initial_state();
         vtu_writer->write(0.);
-        swap_state();
+        if (after_step)
+          problem->swap_with_initial_state();
       }
     outputs_open = true;
   }
@@ -246,15 +138,16 @@ namespace dyncontact
     const std::string dir   = checkpoints.last_directory();
     const auto        state = checkpoints.read_state(dir);
     postprocessors->load(state);
-    triangulation.load(Checkpoints::mesh_file(dir));
-    setup_discretization();
+    DiscreteProblem<dim> &p = *problem;
+    p.triangulation.load(Checkpoints::mesh_file(dir));
+    p.setup(*scene, *timer);
     VectorType              flags;
     std::vector<VectorType> controller_vectors(
       time_step_controller.n_checkpoint_vectors(state));
-    std::vector<VectorType *> vectors = {&u, &udot, &flags};
+    std::vector<VectorType *> vectors = {&p.u, &p.udot, &flags};
     for (VectorType &v : controller_vectors)
       vectors.push_back(&v);
-    system->deserialize(vectors);
+    p.get_system().deserialize(vectors);
     control.load(state);
     AssertThrow(control.get_end_time() > control.get_time(),
                 ExcMessage("Time integration/End time = " +
@@ -263,7 +156,7 @@ namespace dyncontact
                            format_number(control.get_time()) +
                            " s: a resumed run needs a later End time."));
     time_step_controller.load(state,
-                              contact->get_rows(),
+                              p.get_contact().get_rows(),
                               flags,
                               controller_vectors);
     vtu_writer->load(state);
@@ -275,14 +168,15 @@ namespace dyncontact
       refine_mesh();
     else
       {
-        make_integrator();
-        integrator->load_active_sets(flags);
+        p.make_integrator(*timer);
+        p.get_integrator().load_active_sets(flags);
       }
     if (time_step_controller.is_adaptive() &&
         state.count("step_matrices_built"))
       // those of the run before the checkpoint; make_integrator() above
       // built one more, which counts
-      n_step_matrices = std::stoul(state.at("step_matrices_built"));
+      p.set_n_earlier_step_matrices(
+        std::stoul(state.at("step_matrices_built")));
     open_outputs();
     pcout << "   resumed from " << dir << " at step " << control.get_step()
           << ", t = " << control.get_time() << " s" << std::endl;
@@ -307,32 +201,11 @@ namespace dyncontact
   void
   Simulator<dim>::refine_mesh()
   {
-    const double energy_before = system->total_energy(u, udot);
-    {
-      TimerOutput::Scope t(*timer, "mesh adaptation");
-      mesh_adaptor->mark_cells(triangulation);
-      // transfer u and udot to the new mesh (p4est repartitions it)
-      triangulation.prepare_coarsening_and_refinement();
-      system->prepare_for_refinement(u, udot);
-      triangulation.execute_coarsening_and_refinement();
-    }
-    setup_discretization();
-    {
-      TimerOutput::Scope t(*timer, "mesh adaptation");
-      system->interpolate_after_refinement(u, udot);
-    }
-    // the estimates and the rows' states refer to the old mesh
-    time_step_controller.reset(contact->get_rows().size());
-    make_integrator();
-
-    // the transferred displacement may violate the new K_h: back onto it
-    double violation;
-    {
-      TimerOutput::Scope t(*timer, "mesh adaptation");
-      violation =
-        integrator->restore_constraints(u, contact->get_row_operator());
-    }
-    mesh_transfer.add(system->total_energy(u, udot) - energy_before, violation);
+    const auto [energy_change, violation] = problem->adapt_mesh(
+      *scene,
+      [this]() { mesh_adaptor->mark_cells(problem->triangulation); },
+      *timer);
+    mesh_transfer.add(energy_change, violation);
   }
 
 
@@ -344,15 +217,16 @@ namespace dyncontact
     TimerOutput::Scope t(*timer, "checkpoint");
     const std::string  dir = checkpoints.begin(control.get_step());
     std::map<std::string, std::string> state;
-    VectorType                         flags(u);
-    integrator->save_active_sets(flags);
+    DiscreteProblem<dim>              &p = *problem;
+    VectorType                         flags(p.u);
+    p.get_integrator().save_active_sets(flags);
     const std::vector<VectorType> controller_vectors =
-      time_step_controller.save(state, contact->get_rows(), flags, u);
-    std::vector<const VectorType *> vectors = {&u, &udot, &flags};
+      time_step_controller.save(state, p.get_contact().get_rows(), flags, p.u);
+    std::vector<const VectorType *> vectors = {&p.u, &p.udot, &flags};
     for (const VectorType &v : controller_vectors)
       vectors.push_back(&v);
-    system->prepare_for_serialization(vectors);
-    triangulation.save(Checkpoints::mesh_file(dir));
+    p.get_system().prepare_for_serialization(vectors);
+    p.triangulation.save(Checkpoints::mesh_file(dir));
     control.save(state);
     postprocessors->save(state);
     mesh_transfer.save(state);
@@ -361,8 +235,7 @@ namespace dyncontact
     state["refinement_pending"] =
       moments.last && mesh_adaptor->refinement_due(control.get_step()) ? "1" :
                                                                          "0";
-    state["step_matrices_built"] = std::to_string(
-      n_step_matrices + integrator->get_operators().n_step_matrices_built);
+    state["step_matrices_built"] = std::to_string(p.n_step_matrices());
     checkpoints.finish(dir, state);
     return dir;
   }
@@ -373,15 +246,17 @@ namespace dyncontact
   void
   Simulator<dim>::stop_after_failed_step(const bool finite)
   {
+    const StepReport  &report = problem->report;
+    const std::string  cause  = finite && !report.converged() ?
+                                  report.failure() :
+                                  "the solution is not finite";
     std::ostringstream message;
     if (control.get_step() == 0 && !checkpoints.resume())
       {
         // nothing to keep: the output directory stays as it was
         message << std::setprecision(6) << "the first step (tau = "
-                << time_step_controller.get_timestep() << " s) failed: "
-                << (finite && !report.converged() ?
-                      report.failure() :
-                      "the solution is not finite")
+                << time_step_controller.get_timestep()
+                << " s) failed: " << cause
                 << ". Nothing was written. Try a smaller Time integration/Time "
                    "step, or set 'Time integration/Time step adaptation = "
                    "true'.";
@@ -391,80 +266,12 @@ namespace dyncontact
     message << std::setprecision(6) << "step " << control.get_step() + 1
             << " (from t = " << control.get_time()
             << " s, tau = " << time_step_controller.get_timestep()
-            << " s) failed: "
-            << (finite && !report.converged() ? report.failure() :
-                                                "the solution is not finite")
-            << ". The last good state (step " << control.get_step()
-            << ") is the checkpoint '" << dir
+            << " s) failed: " << cause << ". The last good state (step "
+            << control.get_step() << ") is the checkpoint '" << dir
             << "' (resume with 'Checkpointing/Resume = true'), or set 'Time "
                "integration/Time step adaptation = true'.";
     AssertThrow(false, ExcMessage(message.str()));
     std::abort();
-  }
-
-
-
-  template <int dim>
-  TimeStepController::AcceptedStep
-  Simulator<dim>::take_step()
-  {
-    copy_with_layout(u_old, u);
-    copy_with_layout(udot_old, udot);
-    // where the step starts from: its active sets
-    const auto start_sets = integrator->active_sets();
-    time_step_controller.begin_step(control.get_time());
-    while (true)
-      {
-        const double tau = time_step_controller.trial_timestep();
-        {
-          TimerOutput::Scope t(*timer, "time step");
-          report = integrator->step(tau,
-                                    !time_step_controller.step_is_shortened(),
-                                    u,
-                                    udot);
-        }
-        check_inertia();
-        const bool finite =
-          std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
-        if (!report.converged() || !finite)
-          {
-            // back to the last good state, warm started from the failed
-            // trial's active sets: retry with a smaller step, or stop
-            const auto active = integrator->active_sets();
-            u                 = u_old;
-            udot              = udot_old;
-            if (!time_step_controller.retry_after_failure())
-              stop_after_failed_step(finite);
-            pcout << "   warning: step " << control.get_step() + 1
-                  << " (t = " << control.get_time()
-                  << " s) failed; retrying with tau = "
-                  << time_step_controller.get_timestep() << " s" << std::endl;
-            integrator->warm_start(active.first, active.second);
-            continue;
-          }
-        if (time_step_controller.is_adaptive())
-          {
-            TimerOutput::Scope t(*timer, "time step control");
-            if (time_step_controller.judge(integrator->get_operators(),
-                                           contact->get_row_operator(),
-                                           start_sets.first,
-                                           u_old,
-                                           udot_old,
-                                           u,
-                                           udot,
-                                           report,
-                                           comm) ==
-                TimeStepController::Verdict::retry)
-              {
-                // from the start of the step, with its active sets
-                u    = u_old;
-                udot = udot_old;
-                integrator->warm_start(start_sets.first, start_sets.second);
-                continue;
-              }
-          }
-        return time_step_controller.accept();
-      }
   }
 
 
@@ -481,7 +288,10 @@ namespace dyncontact
     // before the setup has succeeded
     output_directory =
       std::make_unique<OutputDirectory>(parameters.output_directory, comm);
-    build_mesh();
+    problem->build_mesh(*scene,
+                        parameters.initial_refinements,
+                        checkpoints.resume(),
+                        *timer);
     if (checkpoints.resume())
       resume();
     else
@@ -493,8 +303,11 @@ namespace dyncontact
     while (control.keep_going())
       {
         Timer      step_timer;
-        const auto step = take_step();
-        moments         = control.advance(step.tau, step.tau_changed);
+        const auto outcome =
+          problem->take_step(control.get_time(), control.get_step(), *timer);
+        if (outcome.failed)
+          stop_after_failed_step(outcome.finite);
+        moments = control.advance(outcome.step.tau, outcome.step.tau_changed);
         moments.refinement =
           mesh_adaptor->refinement_due(control.get_step()) && !moments.last;
         step_timer.stop();
@@ -502,6 +315,7 @@ namespace dyncontact
         record_statistics();
         if (!outputs_open)
           open_outputs();
+        const StepReport &report = problem->report;
         progress->step(
           control.get_step(),
           control.get_time(),
@@ -509,7 +323,7 @@ namespace dyncontact
           report.tau,
           Utilities::MPI::sum<types::global_dof_index>(
             std::count(report.active.begin(), report.active.end(), 1), comm),
-          contact->n_global_rows(),
+          problem->get_contact().n_global_rows(),
           report.displacement_solve.iterations,
           report.displacement_solve.linear_iterations +
             report.projection_solve.linear_iterations);
@@ -523,10 +337,12 @@ namespace dyncontact
     if (!outputs_open)
       open_outputs();
     loop_clock.stop();
-    run_report.write_summary(
-      run_clock.wall_time(),
-      loop_clock.wall_time(),
-      n_step_matrices + integrator->get_operators().n_step_matrices_built);
+    run_report.write_summary(run_clock.wall_time(),
+                             loop_clock.wall_time(),
+                             problem->n_step_matrices(),
+                             [this](const SummaryInput &input) {
+                               return postprocessors->summary(input);
+                             });
   }
 
 

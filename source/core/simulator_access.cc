@@ -50,28 +50,28 @@ namespace dyncontact
   const parallel::distributed::Triangulation<dim> &
   SimulatorAccess<dim>::get_triangulation() const
   {
-    return simulator->triangulation;
+    return simulator->problem->triangulation;
   }
 
   template <int dim>
   const Mapping<dim> &
   SimulatorAccess<dim>::get_mapping() const
   {
-    return simulator->mapping;
+    return simulator->problem->mapping;
   }
 
   template <int dim>
   const SemiDiscreteSystem<dim> &
   SimulatorAccess<dim>::get_system() const
   {
-    return *simulator->system;
+    return simulator->problem->get_system();
   }
 
   template <int dim>
   const ContactSetup<dim> &
   SimulatorAccess<dim>::get_contact() const
   {
-    return *simulator->contact;
+    return simulator->problem->get_contact();
   }
 
   template <int dim>
@@ -106,7 +106,7 @@ namespace dyncontact
   const TimeIntegrator &
   SimulatorAccess<dim>::get_integrator() const
   {
-    return *simulator->integrator;
+    return simulator->problem->get_integrator();
   }
 
   template <int dim>
@@ -120,28 +120,28 @@ namespace dyncontact
   const VectorType &
   SimulatorAccess<dim>::get_solution() const
   {
-    return simulator->u;
+    return simulator->problem->u;
   }
 
   template <int dim>
   const VectorType &
   SimulatorAccess<dim>::get_velocity() const
   {
-    return simulator->udot;
+    return simulator->problem->udot;
   }
 
   template <int dim>
   const VectorType &
   SimulatorAccess<dim>::get_old_solution() const
   {
-    return simulator->u_old;
+    return simulator->problem->u_old;
   }
 
   template <int dim>
   const StepReport &
   SimulatorAccess<dim>::get_step_report() const
   {
-    return simulator->report;
+    return simulator->problem->report;
   }
 
   template <int dim>

@@ -92,9 +92,12 @@ namespace dyncontact
 
   template <int dim>
   void
-  RunReport<dim>::write_summary(const double       wall_time,
-                                const double       loop_wall_time,
-                                const unsigned int step_matrices) const
+  RunReport<dim>::write_summary(
+    const double                                            wall_time,
+    const double                                            loop_wall_time,
+    const unsigned int                                      step_matrices,
+    const std::function<std::string(const SummaryInput &)> &statistics_lines)
+    const
   {
     const TimeIntegrator     &integrator = this->get_integrator();
     const TimeStepController &time_step_controller =
@@ -116,7 +119,8 @@ namespace dyncontact
     input.step_matrices       = step_matrices;
     input.uses_amg            = integrator.uses_amg();
     input.condition_bound     = integrator.condition_bound();
-    const std::string text    = summary_text(this->get_statistics(), input);
+    const std::string text =
+      summary_text(this->get_statistics(), input, statistics_lines(input));
     const std::string file =
       this->get_parameters().output_directory + "/summary.txt";
     std::string failure;

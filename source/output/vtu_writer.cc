@@ -60,6 +60,321 @@ namespace dyncontact
     private:
       const Scene<dim> &scene;
     };
+
+
+
+    /// The nodal contact fields on the scalar FE_Q, with ghost entries.
+    struct NodalContactFields
+    {
+      TrilinosWrappers::MPI::Vector pressure, active, critical, gap;
+    };
+
+
+
+    /// The nodal contact fields of the @p contact rows after the step that
+    /// @p report describes, with the displacement @p solution: pressure on
+    /// both sides (the master side gets each row's force through the
+    /// weights N_j of its image point), active and critical sets and the
+    /// current gap g_p - (C u)_p on the slave side. Collective.
+    template <int dim>
+    NodalContactFields
+    nodal_contact_fields(const SemiDiscreteSystem<dim> &system,
+                         const ContactSetup<dim>       &contact,
+                         const StepReport              &report,
+                         const VectorType              &solution,
+                         const MPI_Comm                 comm)
+    {
+      const ContactRows &rows            = contact.get_rows();
+      const auto        &row_scalar_dofs = contact.get_row_scalar_dofs();
+      const auto &scalar_locally_owned   = system.scalar_locally_owned_dofs();
+      const auto &scalar_locally_relevant =
+        system.scalar_locally_relevant_dofs();
+
+      VectorType master_force(system.locally_owned_dofs(), comm);
+      const auto violation =
+        contact.get_row_operator().constraint_values(solution);
+      TrilinosWrappers::MPI::Vector pressure(scalar_locally_owned, comm),
+        active(scalar_locally_owned, comm),
+        critical(scalar_locally_owned, comm), gap(scalar_locally_owned, comm);
+      for (unsigned int p = 0; p < rows.size(); ++p)
+        {
+          const double force           = row_force(report, p);
+          pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
+          active(row_scalar_dofs[p])   = report.active[p];
+          critical(row_scalar_dofs[p]) = report.critical[p];
+          gap(row_scalar_dofs[p])      = -violation[p];
+          for (const auto &[dof0, N] : rows.rows[p].master_nodes)
+            master_force(dof0) += N * force;
+        }
+      master_force.compress(VectorOperation::add);
+      for (const auto &[dof0, scalar_dof] :
+           system.get_owned_system0_to_scalar())
+        if (master_force(dof0) != 0.)
+          pressure(scalar_dof) =
+            master_force(dof0) / system.get_boundary_weights()(dof0);
+      pressure.compress(VectorOperation::insert);
+      active.compress(VectorOperation::insert);
+      critical.compress(VectorOperation::insert);
+      gap.compress(VectorOperation::insert);
+      TrilinosWrappers::MPI::Vector pressure_g(scalar_locally_owned,
+                                               scalar_locally_relevant,
+                                               comm),
+        active_g(pressure_g), critical_g(pressure_g), gap_g(pressure_g);
+      pressure_g = pressure;
+      active_g   = active;
+      critical_g = critical;
+      gap_g      = gap;
+      return {std::move(pressure_g),
+              std::move(active_g),
+              std::move(critical_g),
+              std::move(gap_g)};
+    }
+
+
+
+    /// This rank's subdomain id on every active cell of @p triangulation
+    /// (cell data).
+    template <int dim>
+    Vector<float>
+    subdomains(const parallel::distributed::Triangulation<dim> &triangulation)
+    {
+      Vector<float> subdomain(triangulation.n_active_cells());
+      for (auto &s : subdomain)
+        s = triangulation.locally_owned_subdomain();
+      return subdomain;
+    }
+
+
+
+    /// The refinement level of every locally owned active cell of
+    /// @p triangulation (cell data, 0 on the other cells).
+    template <int dim>
+    Vector<float>
+    refinement_levels(
+      const parallel::distributed::Triangulation<dim> &triangulation)
+    {
+      Vector<float> level(triangulation.n_active_cells());
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          level(cell->active_cell_index()) = cell->level();
+      return level;
+    }
+
+
+
+    /**
+     * The fields of one output, computed once and added to the DataOut of
+     * each of its pieces: displacement, velocity, von Mises stress, the
+     * nodal contact fields (nodal_contact_fields()), subdomain and
+     * refinement level.
+     */
+    template <int dim>
+    class OutputFields
+    {
+    public:
+      /// The fields of the state that @p access sees. Collective.
+      explicit OutputFields(const SimulatorAccess<dim> &access)
+        : system(access.get_system())
+        , scene(access.get_scene())
+        , u_ghosted(system.ghosted(access.get_solution()))
+        , v_ghosted(system.ghosted(access.get_velocity()))
+        , contact(nodal_contact_fields(system,
+                                       access.get_contact(),
+                                       access.get_step_report(),
+                                       access.get_solution(),
+                                       access.get_mpi_communicator()))
+        , subdomain(subdomains(access.get_triangulation()))
+        , level(refinement_levels(access.get_triangulation()))
+        , von_mises(scene)
+        , vector_field(dim,
+                       DataComponentInterpretation::component_is_part_of_vector)
+      {}
+
+      /// Adds the fields to @p data_out (collective: the ghost entries of
+      /// the distributed vectors are exchanged).
+      void
+      add_to(DataOut<dim> &data_out) const
+      {
+        data_out.add_data_vector(system.get_dof_handler(),
+                                 u_ghosted,
+                                 std::vector<std::string>(dim, "displacement"),
+                                 vector_field);
+        data_out.add_data_vector(system.get_dof_handler(),
+                                 v_ghosted,
+                                 std::vector<std::string>(dim, "velocity"),
+                                 vector_field);
+        data_out.add_data_vector(system.get_dof_handler(),
+                                 u_ghosted,
+                                 von_mises);
+        data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                 contact.pressure,
+                                 "contact_pressure");
+        data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                 contact.active,
+                                 "active_set");
+        data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                 contact.critical,
+                                 "critical_set");
+        if (!scene.contact_pairs().empty())
+          data_out.add_data_vector(system.get_scalar_dof_handler(),
+                                   contact.gap,
+                                   "gap");
+        data_out.add_data_vector(subdomain, "subdomain");
+        data_out.add_data_vector(level, "refinement_level");
+      }
+
+    private:
+      const SemiDiscreteSystem<dim> &system;
+      const Scene<dim>              &scene;
+      /// Displacement and velocity with ghost entries.
+      const VectorType         u_ghosted, v_ghosted;
+      const NodalContactFields contact;
+      /// Cell data: subdomains() and refinement_levels().
+      const Vector<float>              subdomain, level;
+      const VonMisesPostprocessor<dim> von_mises;
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        vector_field;
+    };
+
+
+
+    /**
+     * The rank's cells are written in pieces of at most 'Cells per piece'
+     * cells, each from its own patches: the memory a write needs beyond the
+     * run's is that of one piece (0.4 GB for the 338 000 cells of a 3D mesh
+     * with 1e6 DoFs in one piece).
+     */
+    template <int dim>
+    struct Pieces
+    {
+      /// Piece k of the rank's cells starts at the cell first_cell[k] and
+      /// ends before the active cell index end_index[k].
+      std::vector<typename Triangulation<dim>::active_cell_iterator> first_cell;
+      std::vector<unsigned int>                                      end_index;
+      /// The pieces are numbered over all ranks, rank by rank: with one
+      /// piece per rank, piece number = rank (the names deal.II's
+      /// write_vtu_with_pvtu_record() gives). The number of this rank's
+      /// first piece and the number of pieces over all ranks.
+      unsigned int my_first_piece = 0, n_global_pieces = 0;
+      /// Adding a distributed vector to a DataOut is collective (its ghost
+      /// entries are exchanged): every rank takes part in as many rounds as
+      /// the rank with the most pieces, with no cells selected once its own
+      /// pieces are written.
+      unsigned int n_rounds = 0;
+
+      /// Whether this rank has a piece @p k.
+      bool
+      has_piece(const unsigned int k) const
+      {
+        return k < first_cell.size();
+      }
+    };
+
+
+
+    /// The locally owned cells of @p triangulation in pieces of at most
+    /// @p cells_per_piece cells, numbered over all ranks. Collective.
+    template <int dim>
+    Pieces<dim>
+    split_into_pieces(
+      const parallel::distributed::Triangulation<dim> &triangulation,
+      const unsigned int                               cells_per_piece,
+      const MPI_Comm                                   comm)
+    {
+      Pieces<dim>  pieces;
+      unsigned int n_owned = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() && n_owned++ % cells_per_piece == 0)
+          {
+            if (!pieces.first_cell.empty())
+              pieces.end_index.push_back(cell->active_cell_index());
+            pieces.first_cell.push_back(cell);
+          }
+      pieces.end_index.push_back(triangulation.n_active_cells());
+      // (a rank without cells writes no piece: ParaView complains about a
+      // piece without points)
+      const unsigned int              n_pieces = pieces.first_cell.size();
+      const std::vector<unsigned int> pieces_of_rank =
+        Utilities::MPI::all_gather(comm, n_pieces);
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      for (unsigned int r = 0; r < pieces_of_rank.size(); ++r)
+        {
+          if (r == rank)
+            pieces.my_first_piece = pieces.n_global_pieces;
+          pieces.n_global_pieces += pieces_of_rank[r];
+        }
+      pieces.n_rounds =
+        *std::max_element(pieces_of_rank.begin(), pieces_of_rank.end());
+      return pieces;
+    }
+
+
+
+    /// Selects for @p data_out the cells of piece @p k of @p pieces: the
+    /// locally owned active cells of @p triangulation from first_cell[k] on,
+    /// with an active cell index below end_index[k] (none if this rank has
+    /// no piece @p k).
+    template <int dim>
+    void
+    select_piece(DataOut<dim>                                    &data_out,
+                 const parallel::distributed::Triangulation<dim> &triangulation,
+                 const Pieces<dim>                               &pieces,
+                 const unsigned int                               k)
+    {
+      using active_cell_iterator =
+        typename Triangulation<dim>::active_cell_iterator;
+      using cell_iterator     = typename Triangulation<dim>::cell_iterator;
+      const bool         mine = pieces.has_piece(k);
+      const unsigned int end  = mine ? pieces.end_index[k] : 0;
+      const auto         next_owned = [end](const Triangulation<dim> &tria,
+                                    active_cell_iterator      cell) {
+        for (; cell != tria.end() && cell->active_cell_index() < end; ++cell)
+          if (cell->is_locally_owned())
+            return cell_iterator(cell);
+        return cell_iterator(tria.end());
+      };
+      const active_cell_iterator first =
+        mine ? pieces.first_cell[k] : active_cell_iterator(triangulation.end());
+      data_out.set_cell_selection(
+        [first, next_owned](const Triangulation<dim> &tria) {
+          return next_owned(tria, first);
+        },
+        [next_owned](const Triangulation<dim> &tria,
+                     const cell_iterator      &cell) {
+          active_cell_iterator next(cell);
+          return next_owned(tria, ++next);
+        });
+    }
+
+
+
+    /// Writes the file @p name with @p write unless @p failure already
+    /// holds the first file this rank could not write; if @p name cannot be
+    /// opened, written (@p write throws) or closed, @p failure becomes
+    /// write_failure() of it.
+    void
+    write_file(std::string                               &failure,
+               const std::string                         &name,
+               const std::function<void(std::ostream &)> &write)
+    {
+      if (!failure.empty())
+        return;
+      errno = 0;
+      std::ofstream out(name);
+      if (out)
+        try
+          {
+            write(out);
+          }
+        catch (const ExceptionBase &)
+          {
+            out.setstate(std::ios::failbit);
+          }
+      out.close();
+      if (!out.good())
+        failure = write_failure(name);
+    }
   } // namespace
 
 
@@ -115,212 +430,53 @@ namespace dyncontact
   void
   VtuWriter<dim>::write(const double time)
   {
-    TimerOutput::Scope             t(this->get_timer(), "output");
-    const SemiDiscreteSystem<dim> &system = this->get_system();
-    const StepReport              &report = this->get_step_report();
-    const ContactRows             &rows   = this->get_contact().get_rows();
-    const auto    &row_scalar_dofs = this->get_contact().get_row_scalar_dofs();
-    const MPI_Comm comm            = this->get_mpi_communicator();
-    const auto    &scalar_locally_owned = system.scalar_locally_owned_dofs();
-    const auto &scalar_locally_relevant = system.scalar_locally_relevant_dofs();
-    const auto &triangulation           = this->get_triangulation();
+    TimerOutput::Scope t(this->get_timer(), "output");
+    const MPI_Comm     comm          = this->get_mpi_communicator();
+    const auto        &triangulation = this->get_triangulation();
 
-    const VectorType u_ghosted = system.ghosted(this->get_solution());
-    const VectorType v_ghosted = system.ghosted(this->get_velocity());
-
-    // nodal contact fields on the scalar FE_Q: pressure on both sides (the
-    // master side gets each row's force through the weights N_j of its
-    // image point), active and critical sets and the current gap
-    // g_p - (C u)_p on the slave side
-    VectorType master_force(system.locally_owned_dofs(), comm);
-    const auto violation =
-      this->get_contact().get_row_operator().constraint_values(
-        this->get_solution());
-    TrilinosWrappers::MPI::Vector pressure(scalar_locally_owned, comm),
-      active(scalar_locally_owned, comm), critical(scalar_locally_owned, comm),
-      gap(scalar_locally_owned, comm);
-    for (unsigned int p = 0; p < rows.size(); ++p)
-      {
-        const double force           = row_force(report, p);
-        pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
-        active(row_scalar_dofs[p])   = report.active[p];
-        critical(row_scalar_dofs[p]) = report.critical[p];
-        gap(row_scalar_dofs[p])      = -violation[p];
-        for (const auto &[dof0, N] : rows.rows[p].master_nodes)
-          master_force(dof0) += N * force;
-      }
-    master_force.compress(VectorOperation::add);
-    for (const auto &[dof0, scalar_dof] : system.get_owned_system0_to_scalar())
-      if (master_force(dof0) != 0.)
-        pressure(scalar_dof) =
-          master_force(dof0) / system.get_boundary_weights()(dof0);
-    pressure.compress(VectorOperation::insert);
-    active.compress(VectorOperation::insert);
-    critical.compress(VectorOperation::insert);
-    gap.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector pressure_g(scalar_locally_owned,
-                                             scalar_locally_relevant,
-                                             comm),
-      active_g(pressure_g), critical_g(pressure_g), gap_g(pressure_g);
-    pressure_g = pressure;
-    active_g   = active;
-    critical_g = critical;
-    gap_g      = gap;
-
-    Vector<float> subdomain(triangulation.n_active_cells());
-    for (auto &s : subdomain)
-      s = triangulation.locally_owned_subdomain();
-    Vector<float> level(triangulation.n_active_cells());
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        level(cell->active_cell_index()) = cell->level();
-    const VonMisesPostprocessor<dim> von_mises(this->get_scene());
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-                          vector_field(dim,
-                   DataComponentInterpretation::component_is_part_of_vector);
-    DataOutBase::VtkFlags flags;
+    const OutputFields<dim> fields(*this);
+    DataOutBase::VtkFlags   flags;
     flags.compression_level =
       static_cast<DataOutBase::VtkFlags::ZlibCompressionLevel>(compression);
 
-    // The rank's cells are written in pieces of at most cells_per_piece
-    // cells ('Cells per piece'), each from its own patches: the memory a
-    // write needs beyond the run's is that of one piece (0.4 GB for the
-    // 338 000 cells of a 3D mesh with 1e6 DoFs in one piece). Piece k of the
-    // rank's cells starts at the cell first_cell[k] and ends before the active
-    // cell index end_index[k].
-    using active_cell_iterator =
-      typename Triangulation<dim>::active_cell_iterator;
-    std::vector<active_cell_iterator> first_cell;
-    std::vector<unsigned int>         end_index;
-    unsigned int                      n_owned = 0;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && n_owned++ % cells_per_piece == 0)
-        {
-          if (!first_cell.empty())
-            end_index.push_back(cell->active_cell_index());
-          first_cell.push_back(cell);
-        }
-    end_index.push_back(triangulation.n_active_cells());
-    // (a rank without cells writes no piece: ParaView complains about a
-    // piece without points)
-    const unsigned int n_pieces = first_cell.size();
-    // the pieces are numbered over all ranks, rank by rank: with one piece
-    // per rank, piece number = rank (the names deal.II's
-    // write_vtu_with_pvtu_record() gives)
-    const std::vector<unsigned int> pieces_of_rank =
-      Utilities::MPI::all_gather(comm, n_pieces);
-    const unsigned int rank            = Utilities::MPI::this_mpi_process(comm);
-    unsigned int       n_global_pieces = 0, my_first_piece = 0;
-    for (unsigned int r = 0; r < pieces_of_rank.size(); ++r)
-      {
-        if (r == rank)
-          my_first_piece = n_global_pieces;
-        n_global_pieces += pieces_of_rank[r];
-      }
+    const Pieces<dim> pieces =
+      split_into_pieces(triangulation, cells_per_piece, comm);
     const std::string directory = this->get_parameters().output_directory;
     const std::string stem =
       "solution_" + Utilities::int_to_string(output_counter, 5);
     const std::string  base = stem + ".";
     const std::string  pvtu = stem + ".pvtu";
     const unsigned int n_digits =
-      Utilities::needed_digits(std::max(0, int(n_global_pieces) - 1));
+      Utilities::needed_digits(std::max(0, int(pieces.n_global_pieces) - 1));
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
-    // Adding a distributed vector to a DataOut is collective (its ghost
-    // entries are exchanged): every rank takes part in as many rounds as
-    // the rank with the most pieces, with no cells selected once its own
-    // pieces are written.
-    const unsigned int n_rounds =
-      *std::max_element(pieces_of_rank.begin(), pieces_of_rank.end());
     // the first file this rank could not write, and why
     std::string failure;
-    const auto  write_file =
-      [&](const std::string                         &name,
-          const std::function<void(std::ostream &)> &write) {
-        if (!failure.empty())
-          return;
-        errno = 0;
-        std::ofstream out(name);
-        if (out)
-          try
-            {
-              write(out);
-            }
-          catch (const ExceptionBase &)
-            {
-              out.setstate(std::ios::failbit);
-            }
-        out.close();
-        if (!out.good())
-          failure = write_failure(name);
-      };
-    using cell_iterator = typename Triangulation<dim>::cell_iterator;
-    for (unsigned int k = 0; k < n_rounds; ++k)
+    for (unsigned int k = 0; k < pieces.n_rounds; ++k)
       {
-        const bool   mine = (k < n_pieces);
+        const bool   mine = pieces.has_piece(k);
         DataOut<dim> data_out;
         data_out.attach_triangulation(triangulation);
-        // the locally owned active cells from first_cell[k] on, with an
-        // active cell index below end_index[k] (none if not mine)
-        const unsigned int end        = mine ? end_index[k] : 0;
-        const auto         next_owned = [end](const Triangulation<dim> &tria,
-                                      active_cell_iterator      cell) {
-          for (; cell != tria.end() && cell->active_cell_index() < end; ++cell)
-            if (cell->is_locally_owned())
-              return cell_iterator(cell);
-          return cell_iterator(tria.end());
-        };
-        const active_cell_iterator first =
-          mine ? first_cell[k] : active_cell_iterator(triangulation.end());
-        data_out.set_cell_selection(
-          [first, next_owned](const Triangulation<dim> &tria) {
-            return next_owned(tria, first);
-          },
-          [next_owned](const Triangulation<dim> &tria,
-                       const cell_iterator      &cell) {
-            active_cell_iterator next(cell);
-            return next_owned(tria, ++next);
-          });
-        data_out.add_data_vector(system.get_dof_handler(),
-                                 u_ghosted,
-                                 std::vector<std::string>(dim, "displacement"),
-                                 vector_field);
-        data_out.add_data_vector(system.get_dof_handler(),
-                                 v_ghosted,
-                                 std::vector<std::string>(dim, "velocity"),
-                                 vector_field);
-        data_out.add_data_vector(system.get_dof_handler(),
-                                 u_ghosted,
-                                 von_mises);
-        data_out.add_data_vector(system.get_scalar_dof_handler(),
-                                 pressure_g,
-                                 "contact_pressure");
-        data_out.add_data_vector(system.get_scalar_dof_handler(),
-                                 active_g,
-                                 "active_set");
-        data_out.add_data_vector(system.get_scalar_dof_handler(),
-                                 critical_g,
-                                 "critical_set");
-        if (!this->get_scene().contact_pairs().empty())
-          data_out.add_data_vector(system.get_scalar_dof_handler(),
-                                   gap_g,
-                                   "gap");
-        data_out.add_data_vector(subdomain, "subdomain");
-        data_out.add_data_vector(level, "refinement_level");
-        data_out.build_patches(this->get_mapping(), system.get_fe().degree);
+        select_piece(data_out, triangulation, pieces, k);
+        fields.add_to(data_out);
+        data_out.build_patches(this->get_mapping(),
+                               this->get_system().get_fe().degree);
         data_out.set_flags(flags);
         if (mine)
-          write_file(directory + "/" + base +
-                       Utilities::int_to_string(my_first_piece + k, n_digits) +
+          write_file(failure,
+                     directory + "/" + base +
+                       Utilities::int_to_string(pieces.my_first_piece + k,
+                                                n_digits) +
                        ".vtu",
                      [&](std::ostream &out) { data_out.write_vtu(out); });
         if (rank == 0 && k == 0)
           {
             // the record of all pieces: any piece's DataOut knows the fields
             std::vector<std::string> piece_names;
-            for (unsigned int i = 0; i < n_global_pieces; ++i)
+            for (unsigned int i = 0; i < pieces.n_global_pieces; ++i)
               piece_names.push_back(
                 base + Utilities::int_to_string(i, n_digits) + ".vtu");
-            write_file(directory + "/" + pvtu, [&](std::ostream &out) {
+            write_file(failure, directory + "/" + pvtu, [&](std::ostream &out) {
               data_out.write_pvtu_record(out, piece_names);
             });
           }
@@ -331,7 +487,7 @@ namespace dyncontact
     ++output_counter;
     pvd_records.emplace_back(time, pvtu);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_file(directory + "/solution.pvd", [&](std::ostream &out) {
+      write_file(failure, directory + "/solution.pvd", [&](std::ostream &out) {
         DataOutBase::write_pvd_record(out, pvd_records);
       });
     stop_with_message_of_rank_0(failure, comm);

@@ -14,11 +14,52 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <sstream>
+#include <string>
+#include <tuple>
 
 namespace dyncontact
 {
   namespace Postprocess
   {
+    namespace
+    {
+      /// "contact intervals: n: [t0, t1], ... s": an interval runs from the
+      /// first to the last step of a run of steps with active rows (the
+      /// first 20 of them are listed).
+      std::string
+      contact_intervals(const Statistics &s)
+      {
+        const auto               time   = s.column("time");
+        const auto               active = s.column("active_nodes");
+        const unsigned int       last   = s.rows.size() - 1;
+        std::vector<std::string> intervals;
+        for (unsigned int r = 0; r <= last; ++r)
+          if (active[r] > 0 && (r == 0 || active[r - 1] == 0))
+            {
+              unsigned int e = r;
+              while (e < last && active[e + 1] > 0)
+                ++e;
+              std::ostringstream interval;
+              interval << std::setprecision(6) << "[" << time[r] << ", "
+                       << time[e] << "]";
+              intervals.push_back(interval.str());
+            }
+        std::ostringstream out;
+        out << "contact intervals: " << intervals.size();
+        for (unsigned int i = 0;
+             i < std::min<std::size_t>(intervals.size(), 20);
+             ++i)
+          out << (i == 0 ? ": " : ", ") << intervals[i];
+        if (intervals.size() > 20)
+          out << ", ...";
+        out << (intervals.empty() ? "" : " s") << "\n";
+        return out.str();
+      }
+    } // namespace
+
+
+
     template <int dim>
     class Contact : public Interface<dim>
     {
@@ -27,6 +68,49 @@ namespace dyncontact
       applies() const override
       {
         return this->get_scene().has_contact();
+      }
+
+      /// The contact intervals (dynamic) or the contact zone (static), the
+      /// peak contact force and pressure and the largest penetration.
+      std::string
+      summary(const Statistics &s, const SummaryInput &input) const override
+      {
+        std::ostringstream out;
+        out << std::setprecision(6);
+        const std::string  force = input.dim == 2 ? "N/m" : "N";
+        const unsigned int last  = s.rows.size() - 1;
+        if (input.is_static)
+          {
+            out << "active nodes: " << s.column("active_nodes")[last]
+                << ", measure " << s.column("active_measure")[last] << " "
+                << (input.dim == 2 ? "m" : "m^2") << "\n"
+                << "contact force: " << s.column("contact_force")[last] << " "
+                << force << "\n"
+                << "peak contact pressure: "
+                << s.column("max_contact_pressure")[last] << " Pa\n"
+                << "largest penetration: " << s.column("max_penetration")[last]
+                << " m\n";
+            return out.str();
+          }
+        out << contact_intervals(s);
+        const auto time = s.column("time");
+        for (const auto &[name, what, unit] :
+             {std::tuple<std::string, std::string, std::string>{
+                "contact_force", "peak contact force", force},
+              {"max_contact_pressure", "peak contact pressure", "Pa"},
+              {"max_penetration", "largest penetration", "m"}})
+          {
+            const unsigned int r = s.row_of_largest(name);
+            out << what << ": " << s.column(name)[r] << " " << unit
+                << " at t = " << time[r] << " s\n";
+          }
+        return out.str();
+      }
+
+      unsigned int
+      summary_position() const override
+      {
+        return 10;
       }
 
       std::vector<std::string>

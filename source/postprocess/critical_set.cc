@@ -25,6 +25,25 @@ namespace dyncontact
         return this->get_scene().has_contact();
       }
 
+      /// The sum of meas Gamma* over the steps (Assumption 4.7).
+      std::string
+      summary(const Statistics &s, const SummaryInput &input) const override
+      {
+        if (input.is_static)
+          return "";
+        std::ostringstream out;
+        out << std::setprecision(6) << "sum of meas Gamma*: "
+            << s.column("critical_measure_sum")[s.rows.size() - 1]
+            << " (eq. 40, summed over the steps)\n";
+        return out.str();
+      }
+
+      unsigned int
+      summary_position() const override
+      {
+        return 30;
+      }
+
       std::vector<std::string>
       columns() const override
       {

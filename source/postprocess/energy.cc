@@ -19,6 +19,7 @@
 #include <dyncontact/time_stepping/simulation_control.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -30,6 +31,59 @@ namespace dyncontact
     class Energy : public Interface<dim>
     {
     public:
+      /// E + W_visc at the start and the end, the largest increase between
+      /// steps and whether Theorem 3.2 held within the monitor's tolerance.
+      std::string
+      summary(const Statistics &s, const SummaryInput &input) const override
+      {
+        if (input.is_static)
+          return "";
+        const auto         time        = s.column("time");
+        const auto         kinetic     = s.column("energy_kinetic");
+        const auto         elastic     = s.column("energy_elastic");
+        const auto         dissipation = s.column("dissipation_viscous");
+        const auto         balance     = s.column("energy_balance");
+        const std::string  energy      = input.dim == 2 ? "J/m" : "J";
+        const unsigned int last        = s.rows.size() - 1;
+        double             scale = 0., increase = 0.;
+        unsigned           at = 0;
+        for (unsigned int r = 0; r <= last; ++r)
+          {
+            scale =
+              std::max(scale,
+                       kinetic[r] + std::abs(elastic[r]) + dissipation[r]);
+            if (r > 0 && balance[r] - balance[r - 1] > increase)
+              {
+                increase = balance[r] - balance[r - 1];
+                at       = r;
+              }
+          }
+        const double       relative = increase / std::max(scale, 1e-300);
+        std::ostringstream out;
+        out << std::setprecision(6)
+            << "energy E + W_visc: " << kinetic[0] + elastic[0] + dissipation[0]
+            << " " << energy << " at the start, "
+            << kinetic[last] + elastic[last] + dissipation[last] << " "
+            << energy << " at the end, energy_balance " << balance[last] << " "
+            << energy << "\n"
+            << "largest energy increase between steps: " << increase << " "
+            << energy;
+        if (increase > 0.)
+          out << " at t = " << time[at] << " s";
+        out << " (" << relative << " of the energy scale " << scale << " "
+            << energy << "); Theorem 3.2 "
+            << (relative <= input.energy_tolerance ? "held" : "did not hold")
+            << " within the monitor's tolerance " << input.energy_tolerance
+            << "\n";
+        return out.str();
+      }
+
+      unsigned int
+      summary_position() const override
+      {
+        return 20;
+      }
+
       std::vector<std::string>
       columns() const override
       {

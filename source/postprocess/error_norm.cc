@@ -54,6 +54,18 @@ namespace dyncontact
                !this->get_control().is_static_problem();
       }
 
+      std::string
+      summary(const Statistics &s, const SummaryInput &) const override
+      {
+        return error_summary(s, "error_energy_norm");
+      }
+
+      unsigned int
+      summary_position() const override
+      {
+        return 40;
+      }
+
       std::vector<std::string>
       columns() const override
       {

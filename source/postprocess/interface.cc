@@ -19,6 +19,22 @@ namespace dyncontact
 
   namespace Postprocess
   {
+    std::string
+    error_summary(const Statistics &s, const std::string &name)
+    {
+      const auto         time = s.column("time");
+      const auto         e    = s.column(name);
+      const unsigned int last = s.row_of_last_value(name);
+      const unsigned int max  = s.row_of_largest(name);
+      std::ostringstream out;
+      out << std::setprecision(6) << name << ": " << e[last]
+          << " at t = " << time[last] << " s (the last value), " << e[max]
+          << " at most (t = " << time[max] << " s)\n";
+      return out.str();
+    }
+
+
+
     template <int dim>
     void
     Manager<dim>::declare_parameters(ParameterHandler &prm)
@@ -64,6 +80,28 @@ namespace dyncontact
             postprocessors.back()->parse_parameters(prm);
             listed.push_back(all ? "" : info.name);
           }
+    }
+
+
+
+    template <int dim>
+    std::string
+    Manager<dim>::summary(const SummaryInput &input) const
+    {
+      std::vector<const Interface<dim> *> ordered;
+      for (const auto &p : postprocessors)
+        ordered.push_back(p.get());
+      std::stable_sort(ordered.begin(),
+                       ordered.end(),
+                       [](const Interface<dim> *a, const Interface<dim> *b) {
+                         return a->summary_position() < b->summary_position();
+                       });
+      std::string lines;
+      if (statistics.rows.empty())
+        return lines;
+      for (const Interface<dim> *p : ordered)
+        lines += p->summary(statistics, input);
+      return lines;
     }
 
 

@@ -19,6 +19,18 @@ namespace dyncontact
         return this->get_reference_states().compares();
       }
 
+      std::string
+      summary(const Statistics &s, const SummaryInput &) const override
+      {
+        return error_summary(s, "error_reference");
+      }
+
+      unsigned int
+      summary_position() const override
+      {
+        return 41;
+      }
+
       std::vector<std::string>
       columns() const override
       {

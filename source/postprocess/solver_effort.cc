@@ -5,6 +5,9 @@
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace dyncontact
 {
   namespace Postprocess
@@ -13,6 +16,24 @@ namespace dyncontact
     class SolverEffort : public Interface<dim>
     {
     public:
+      /// The iterations of the whole run.
+      std::string
+      summary(const Statistics &s, const SummaryInput &) const override
+      {
+        std::ostringstream out;
+        out << std::setprecision(6) << "iterations: active-set "
+            << s.sum("active_set_iterations") << ", projection "
+            << s.sum("projection_iterations") << ", CG "
+            << s.sum("linear_iterations") << "\n";
+        return out.str();
+      }
+
+      unsigned int
+      summary_position() const override
+      {
+        return 50;
+      }
+
       std::vector<std::string>
       columns() const override
       {

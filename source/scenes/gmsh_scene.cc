@@ -68,6 +68,127 @@ namespace dyncontact
         text += (text.empty() ? "" : ", ") + std::to_string(tag);
       return text;
     }
+
+    /**
+     * The body (0 or 1) whose tags in @p body_tags contain the physical
+     * tag @p tag of a cell; throws if neither does.
+     */
+    unsigned int
+    body_of_cell_tag(const unsigned int                           tag,
+                     const std::array<std::set<unsigned int>, 2> &body_tags,
+                     const std::string                           &mesh_file)
+    {
+      int body = -1;
+      for (unsigned int b = 0; b < 2; ++b)
+        if (body_tags[b].count(tag))
+          body = b;
+      AssertThrow(body >= 0,
+                  ExcMessage(
+                    "Mesh file '" + mesh_file + "': cells with physical tag " +
+                    std::to_string(tag) +
+                    " belong to no body (Scene/Gmsh/Body 1 tags = " +
+                    to_list(body_tags[0]) + ", Scene/Gmsh/Body 2 tags = " +
+                    to_list(body_tags[1]) + ")."));
+      return body;
+    }
+
+    /**
+     * Replaces the physical tag (material id) of every cell of @p tria by
+     * the number of its body. Checks that the two bodies share no vertex and
+     * that the mesh has cells with every tag in @p body_tags.
+     */
+    template <int dim>
+    void
+    set_bodies(Triangulation<dim, dim>                     &tria,
+               const std::array<std::set<unsigned int>, 2> &body_tags,
+               const std::string                           &mesh_file)
+    {
+      std::set<unsigned int>               cell_tags;
+      std::map<unsigned int, unsigned int> vertex_body;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const unsigned int tag = cell->material_id();
+          cell_tags.insert(tag);
+          const unsigned int body = body_of_cell_tag(tag, body_tags, mesh_file);
+          cell->set_material_id(body);
+          for (const auto v : cell->vertex_indices())
+            {
+              const auto [it, inserted] =
+                vertex_body.emplace(cell->vertex_index(v), body);
+              AssertThrow(inserted || it->second == body,
+                          ExcMessage("Mesh file '" + mesh_file +
+                                     "': the two bodies share the vertex " +
+                                     Utilities::to_string(cell->vertex(v)[0]) +
+                                     ", " +
+                                     Utilities::to_string(cell->vertex(v)[1]) +
+                                     "; bodies in contact must be meshed "
+                                     "separately."));
+            }
+        }
+      for (unsigned int b = 0; b < 2; ++b)
+        for (const auto tag : body_tags[b])
+          AssertThrow(cell_tags.count(tag),
+                      ExcMessage("Scene/Gmsh/Body " + std::to_string(b + 1) +
+                                 " tags: the mesh file '" + mesh_file +
+                                 "' has no cells with physical tag " +
+                                 std::to_string(tag) + "."));
+    }
+
+    /**
+     * The physical tags of the boundary faces of @p tria (whose material
+     * ids are bodies, see set_bodies()). Checks that the faces with a tag in
+     * @p contact_tags[b] lie on body b.
+     */
+    template <int dim>
+    std::set<unsigned int>
+    boundary_tags(
+      const Triangulation<dim, dim>                        &tria,
+      const std::array<std::vector<types::boundary_id>, 2> &contact_tags,
+      const std::string                                    &mesh_file)
+    {
+      std::set<unsigned int> face_tags;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const unsigned int tag = cell->face(f)->boundary_id();
+              face_tags.insert(tag);
+              for (unsigned int b = 0; b < 2; ++b)
+                AssertThrow(std::find(contact_tags[b].begin(),
+                                      contact_tags[b].end(),
+                                      tag) == contact_tags[b].end() ||
+                              cell->material_id() == b,
+                            ExcMessage(
+                              "Scene/Gmsh/Contact tags of body " +
+                              std::to_string(b + 1) +
+                              ": the boundary faces "
+                              "with physical tag " +
+                              std::to_string(tag) + " in the mesh file '" +
+                              mesh_file + "' belong to body " +
+                              std::to_string(cell->material_id() + 1) +
+                              ", not to body " + std::to_string(b + 1) + "."));
+            }
+      return face_tags;
+    }
+
+    /**
+     * Checks that @p face_tags (the tags of the boundary faces) has every
+     * tag in @p tags, the value of the parameter Scene/Gmsh/@p entry.
+     */
+    template <typename Tags>
+    void
+    require_boundary_tags(const std::set<unsigned int> &face_tags,
+                          const std::string            &entry,
+                          const Tags                   &tags,
+                          const std::string            &mesh_file)
+    {
+      for (const auto tag : tags)
+        AssertThrow(face_tags.count(tag),
+                    ExcMessage("Scene/Gmsh/" + entry + ": the mesh file '" +
+                               mesh_file +
+                               "' has no boundary faces with physical tag " +
+                               std::to_string(tag) + "."));
+    }
   } // namespace
 
 
@@ -198,83 +319,21 @@ namespace dyncontact
     grid_in.attach_triangulation(tria);
     grid_in.read_msh(in);
 
-    // cells: physical tag -> body
-    std::set<unsigned int>               cell_tags;
-    std::map<unsigned int, unsigned int> vertex_body;
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        const unsigned int tag = cell->material_id();
-        cell_tags.insert(tag);
-        int body = -1;
-        for (unsigned int b = 0; b < 2; ++b)
-          if (body_tags[b].count(tag))
-            body = b;
-        AssertThrow(body >= 0,
-                    ExcMessage(
-                      "Mesh file '" + mesh_file +
-                      "': cells with physical tag " + std::to_string(tag) +
-                      " belong to no body (Scene/Gmsh/Body 1 tags = " +
-                      to_list(body_tags[0]) + ", Scene/Gmsh/Body 2 tags = " +
-                      to_list(body_tags[1]) + ")."));
-        cell->set_material_id(body);
-        for (const auto v : cell->vertex_indices())
-          {
-            const auto [it, inserted] =
-              vertex_body.emplace(cell->vertex_index(v), body);
-            AssertThrow(inserted || it->second == unsigned(body),
-                        ExcMessage("Mesh file '" + mesh_file +
-                                   "': the two bodies share the vertex " +
-                                   Utilities::to_string(cell->vertex(v)[0]) +
-                                   ", " +
-                                   Utilities::to_string(cell->vertex(v)[1]) +
-                                   "; bodies in contact must be meshed "
-                                   "separately."));
-          }
-      }
-    for (unsigned int b = 0; b < 2; ++b)
-      for (const auto tag : body_tags[b])
-        AssertThrow(cell_tags.count(tag),
-                    ExcMessage("Scene/Gmsh/Body " + std::to_string(b + 1) +
-                               " tags: the mesh file '" + mesh_file +
-                               "' has no cells with physical tag " +
-                               std::to_string(tag) + "."));
-
-    // boundaries: every tag named in the prm must exist, and a contact tag
-    // of a body must lie on that body
-    std::set<unsigned int> face_tags;
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const auto f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            const unsigned int tag = cell->face(f)->boundary_id();
-            face_tags.insert(tag);
-            for (unsigned int b = 0; b < 2; ++b)
-              AssertThrow(std::find(contact_tags[b].begin(),
-                                    contact_tags[b].end(),
-                                    tag) == contact_tags[b].end() ||
-                            cell->material_id() == b,
-                          ExcMessage(
-                            "Scene/Gmsh/Contact tags of body " +
-                            std::to_string(b + 1) +
-                            ": the boundary faces "
-                            "with physical tag " +
-                            std::to_string(tag) + " in the mesh file '" +
-                            mesh_file + "' belong to body " +
-                            std::to_string(cell->material_id() + 1) +
-                            ", not to body " + std::to_string(b + 1) + "."));
-          }
-    auto require = [&](const std::string &entry, const auto &tags) {
-      for (const auto tag : tags)
-        AssertThrow(face_tags.count(tag),
-                    ExcMessage("Scene/Gmsh/" + entry + ": the mesh file '" +
-                               mesh_file +
-                               "' has no boundary faces with physical tag " +
-                               std::to_string(tag) + "."));
-    };
-    require("Dirichlet tags", dirichlet_tags);
-    require("Neumann tags", neumann_tags);
-    require("Contact tags of body 1", contact_tags[0]);
-    require("Contact tags of body 2", contact_tags[1]);
+    set_bodies(tria, body_tags, mesh_file);
+    const auto face_tags = boundary_tags(tria, contact_tags, mesh_file);
+    require_boundary_tags(face_tags,
+                          "Dirichlet tags",
+                          dirichlet_tags,
+                          mesh_file);
+    require_boundary_tags(face_tags, "Neumann tags", neumann_tags, mesh_file);
+    require_boundary_tags(face_tags,
+                          "Contact tags of body 1",
+                          contact_tags[0],
+                          mesh_file);
+    require_boundary_tags(face_tags,
+                          "Contact tags of body 2",
+                          contact_tags[1],
+                          mesh_file);
   }
 
 

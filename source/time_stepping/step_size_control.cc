@@ -11,6 +11,118 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// The fraction of the step (of length trial.tau) at which the free
+    /// row @p row (number @p p, constraint value @p before at t_n and rate
+    /// (C udot^n)_p @p rate) comes into contact: where its constraint value
+    /// reaches 0 if it approaches, else, if the @p trial holds it, where it
+    /// reaches the penetration that the multiplier stands for (if above
+    /// @p touching); 2 if neither.
+    double
+    contact_fraction(const StepOperators &operators,
+                     const ContactRow    &row,
+                     const StepReport    &trial,
+                     const std::size_t    p,
+                     const double         before,
+                     const double         rate,
+                     const double         touching)
+    {
+      const double tau   = trial.tau;
+      double       theta = 2.;
+      if (rate > 0.)
+        // c_p(t) = c_p(t_n) + (t - t_n) (C udot^n)_p reaches 0;
+        // N-CS++'s projection looks one step beyond the trial
+        theta = -before / (rate * tau);
+      else if (trial.active[p])
+        {
+          // pulled into contact (no approaching velocity): the
+          // penetration the multiplier stands for, mu_p / S_ee
+          const double end =
+            trial.multipliers[p] /
+            operators.step_matrix_diagonal(row.eliminated_dof());
+          if (end > touching)
+            theta = -before / (end - before);
+        }
+      return theta;
+    }
+
+
+
+    /// The fraction of the step of length @p tau at which the released row
+    /// @p row (force @p force_before at t_n, constraint value @p after at
+    /// the trial's end) loses its force.
+    double
+    release_fraction(const StepOperators &operators,
+                     const ContactRow    &row,
+                     const double         tau,
+                     const double         force_before,
+                     const double         after)
+    {
+      // released: the force from > 0 at t_n to the -2/tau^2 S_ee
+      // gap_p that the trial's opened gap stands for
+      const double end = 2. / (tau * tau) *
+                         operators.step_matrix_diagonal(row.eliminated_dof()) *
+                         after;
+      return force_before / (force_before - end);
+    }
+
+
+
+    /// The least fraction of the trial step, not below its first hundredth,
+    /// at which one of this rank's rows that @p comes_into_contact or
+    /// @p is_released has its event (2 if none). Collective.
+    template <typename ComesIntoContact, typename IsReleased>
+    double
+    earliest_event(const StepOperators       &operators,
+                   const ContactRowOperator  &row_operator,
+                   const std::vector<double> &forces_before,
+                   const VectorType          &u_old,
+                   const VectorType          &udot_old,
+                   const VectorType          &u,
+                   const StepReport          &trial,
+                   const bool                 known,
+                   const ComesIntoContact    &comes_into_contact,
+                   const IsReleased          &is_released,
+                   const MPI_Comm             comm)
+    {
+      // events in the first hundredth of the step are not located: the step
+      // would be too short to be worth it (and it is where the step after a
+      // located event finds its row, at a gap of round-off size)
+      const double       smallest = 1e-2;
+      const double       tau      = trial.tau;
+      const ContactRows &rows     = row_operator.rows();
+      const std::size_t  n        = row_operator.size();
+      const auto         before   = row_operator.constraint_values(u_old);
+      const auto         rate     = row_operator.apply(udot_old);
+      const auto         after    = row_operator.constraint_values(u);
+      // gaps below round-off of the problem's lengths (a row that a
+      // located step left touching) locate nothing: their ratios would
+      // be ratios of round-off, different on different numbers of ranks
+      double length = 0.;
+      for (std::size_t p = 0; known && p < n; ++p)
+        length = std::max(
+          {length, std::abs(rows.rows[p].gap), tau * std::abs(rate[p])});
+      const double touching = 1e-9 * Utilities::MPI::max(length, comm);
+      double       fraction = 2.;
+      for (std::size_t p = 0; known && p < n; ++p)
+        {
+          double theta = 2.;
+          if (comes_into_contact(p) && before[p] < -touching)
+            theta = contact_fraction(
+              operators, rows.rows[p], trial, p, before[p], rate[p], touching);
+          else if (is_released(p) && after[p] < -touching)
+            theta = release_fraction(
+              operators, rows.rows[p], tau, forces_before[p], after[p]);
+          if (theta >= smallest)
+            fraction = std::min(fraction, theta);
+        }
+      return fraction;
+    }
+  } // namespace
+
+
+
   double
   StepSizeControl::event_fraction(const StepOperators       &operators,
                                   const ContactRowOperator  &row_operator,
@@ -24,14 +136,8 @@ namespace dyncontact
                                   const bool                 every_row,
                                   const MPI_Comm             comm)
   {
-    // events in the first hundredth of the step are not located: the step
-    // would be too short to be worth it (and it is where the step after a
-    // located event finds its row, at a gap of round-off size)
-    const double       smallest = 1e-2;
-    const double       tau      = trial.tau;
-    const ContactRows &rows     = row_operator.rows();
-    const std::size_t  n        = row_operator.size();
-    const bool known = (active_before.size() == n && settled.size() == n);
+    const std::size_t n = row_operator.size();
+    const bool known    = (active_before.size() == n && settled.size() == n);
     // the events located are the onset of contact (no row active at t_n)
     // and the separation (no row active in the trial): in a contact zone
     // that grows or shrinks node by node (a Hertz drop) locating each
@@ -61,52 +167,17 @@ namespace dyncontact
       has_event = comes_into_contact(p) || is_released(p);
     double fraction = 2.;
     if (Utilities::MPI::logical_or(has_event, comm))
-      {
-        const auto before = row_operator.constraint_values(u_old);
-        const auto rate   = row_operator.apply(udot_old);
-        const auto after  = row_operator.constraint_values(u);
-        // gaps below round-off of the problem's lengths (a row that a
-        // located step left touching) locate nothing: their ratios would
-        // be ratios of round-off, different on different numbers of ranks
-        double length = 0.;
-        for (std::size_t p = 0; known && p < n; ++p)
-          length = std::max(
-            {length, std::abs(rows.rows[p].gap), tau * std::abs(rate[p])});
-        const double touching = 1e-9 * Utilities::MPI::max(length, comm);
-        for (std::size_t p = 0; known && p < n; ++p)
-          {
-            double theta = 2.;
-            if (comes_into_contact(p) && before[p] < -touching)
-              {
-                if (rate[p] > 0.)
-                  // c_p(t) = c_p(t_n) + (t - t_n) (C udot^n)_p reaches 0;
-                  // N-CS++'s projection looks one step beyond the trial
-                  theta = -before[p] / (rate[p] * tau);
-                else if (trial.active[p])
-                  {
-                    // pulled into contact (no approaching velocity): the
-                    // penetration the multiplier stands for, mu_p / S_ee
-                    const double end =
-                      trial.multipliers[p] / operators.step_matrix_diagonal(
-                                               rows.rows[p].eliminated_dof());
-                    if (end > touching)
-                      theta = -before[p] / (end - before[p]);
-                  }
-              }
-            else if (is_released(p) && after[p] < -touching)
-              {
-                // released: the force from > 0 at t_n to the -2/tau^2 S_ee
-                // gap_p that the trial's opened gap stands for
-                const double end = 2. / (tau * tau) *
-                                   operators.step_matrix_diagonal(
-                                     rows.rows[p].eliminated_dof()) *
-                                   after[p];
-                theta = forces_before[p] / (forces_before[p] - end);
-              }
-            if (theta >= smallest)
-              fraction = std::min(fraction, theta);
-          }
-      }
+      fraction = earliest_event(operators,
+                                row_operator,
+                                forces_before,
+                                u_old,
+                                udot_old,
+                                u,
+                                trial,
+                                known,
+                                comes_into_contact,
+                                is_released,
+                                comm);
     fraction = Utilities::MPI::min(fraction, comm);
     // an event in (t_n + tau, t_n + 2 tau): two steps of half that length,
     // so that the first one's look ahead ends at the event

@@ -32,6 +32,19 @@ namespace dyncontact
 
     void
     write_row(std::ostream &out, const std::vector<double> &row) const;
+
+    /// The row of the largest value of column @p name (the first one;
+    /// rows without a value, nan, are left out).
+    unsigned int
+    row_of_largest(const std::string &name) const;
+
+    /// The row of the last value of column @p name that is not nan.
+    unsigned int
+    row_of_last_value(const std::string &name) const;
+
+    /// The sum of the values of column @p name (0 if there is none).
+    double
+    sum(const std::string &name) const;
   };
 } // namespace dyncontact
 

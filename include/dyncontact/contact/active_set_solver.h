@@ -234,6 +234,29 @@ namespace dyncontact
                     VectorType                      &y,
                     const VectorType                &x) const;
 
+    /// y = P^{-1} x (AMG, or Jacobi) with the constrained entries zero.
+    void
+    precondition_condensed(const AffineConstraints<double> &homogeneous,
+                           VectorType                      &y,
+                           const VectorType                &x) const;
+
+    /// Sets the constrained entries of @p x to zero.
+    void
+    zero_constrained(const AffineConstraints<double> &homogeneous,
+                     VectorType                      &x) const;
+
+    /// The next active set: row p is active where mu_p + c_p (C v - g)_p >
+    /// c_p delta; the displacement tolerance delta (returned in @p delta,
+    /// from the gaps and v) keeps round-off from flipping rows that sit
+    /// exactly on the constraint. The complementarity residual goes into
+    /// @p result.
+    std::vector<char>
+    next_active_set(const VectorType          &v,
+                    const std::vector<double> &multipliers,
+                    const std::vector<double> &violation,
+                    double                    &delta,
+                    Result                    &result) const;
+
     /// y = T^T z: adds constrained entries to the entries they depend on.
     void
     transpose_distribute(const AffineConstraints<double> &homogeneous,

@@ -3,17 +3,14 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/distributed/tria.h>
-#include <deal.II/fe/mapping_q1.h>
 
 #include <dyncontact/base/global_parameters.h>
 #include <dyncontact/base/statistics.h>
-#include <dyncontact/contact/active_set_solver.h>
 #include <dyncontact/core/simulator_access.h>
 #include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/output/checkpoint.h>
 #include <dyncontact/output/run_report.h>
-#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/discrete_problem.h>
 #include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
@@ -33,19 +30,16 @@ namespace dyncontact
   class Progress;
 
   /**
-   * The time loop, and nothing else: it builds the scene's mesh, asks the
-   * components to set themselves up on it, and steps. What happens in a
-   * step, to the statistics, the output, the mesh and the checkpoints is
-   * each one component's job:
+   * The run: it builds the components from the parameters, starts (or
+   * resumes) the DiscreteProblem and steps it; after each step it asks the
+   * components for the step's moments and acts on them:
    *
-   * - SimulationControl: time, tau, output and checkpoint moments, retries;
-   * - SemiDiscreteSystem: DoFs, constraints, M, A, B, f, w, state transfer;
-   * - ContactSetup: the constraint rows (obstacle or phi_h);
-   * - TimeIntegrator: the scheme (N-CI, N-CS, N-CS++, static) and its
-   *   active-set solvers;
+   * - TimeStepController: tau, its estimates and events, trial steps;
+   * - SimulationControl: time, output and checkpoint moments, the end;
+   * - DiscreteProblem: mesh, system, contact rows, integrator, state;
    * - Postprocess::Manager: the statistics (plugins);
    * - MeshAdaptor: when and where the mesh adapts (criteria are plugins);
-   * - VtuWriter, ReferenceStates, Checkpoints: output.
+   * - VtuWriter, ReferenceStates, Checkpoints, RunReport: output.
    *
    * Components read the state through SimulatorAccess; each declares its own
    * parameters (declare_all_parameters() collects them).
@@ -69,23 +63,6 @@ namespace dyncontact
   private:
     void
     run_time_loop();
-    void
-    build_mesh();
-    /// DoFs, matrices and contact rows on the current mesh.
-    void
-    setup_discretization();
-    void
-    make_integrator();
-    /// Warns once if S = M + tau^2/4 A + tau/2 B keeps the mass only to a
-    /// poor relative accuracy.
-    void
-    check_inertia();
-    /// One step from (u, udot) = (u_old, udot_old): trial steps with the
-    /// TimeStepController's tau until it accepts one (it retries after a
-    /// failed solve, a located contact event, an error estimate above the
-    /// tolerance); returns the accepted step's tau.
-    TimeStepController::AcceptedStep
-    take_step();
     /// The initial state and its statistics row (a new run).
     void
     start();
@@ -115,29 +92,18 @@ namespace dyncontact
     std::unique_ptr<TimerOutput> timer;
 
     /// tau (declared before the control, which reads it)
-    TimeStepController          time_step_controller;
-    SimulationControl           control;
-    const Scheme               &scheme;
-    ActiveSetSolver::Parameters solver_parameters;
-    std::unique_ptr<Scene<dim>> scene;
+    TimeStepController                    time_step_controller;
+    SimulationControl                     control;
+    const Scheme                         &scheme;
+    std::unique_ptr<DiscreteProblem<dim>> problem;
+    std::unique_ptr<Scene<dim>>           scene;
 
-    parallel::distributed::Triangulation<dim> triangulation;
-    MappingQ1<dim>                            mapping;
-    std::unique_ptr<SemiDiscreteSystem<dim>>  system;
-    std::unique_ptr<ContactSetup<dim>>        contact;
-    std::unique_ptr<TimeIntegrator>           integrator;
-
-    VectorType u, udot, u_old, udot_old;
-    StepReport report, initial_report;
     /// What follows the present step (output, refinement, checkpoint).
     StepMoments moments;
     /// What the transfers to adapted meshes did since the last row.
     MeshTransfer mesh_transfer;
     double       step_wall_time = 0.;
     bool         outputs_open   = false;
-    bool         warned_inertia = false;
-    /// step matrices S built by the integrators of earlier meshes
-    unsigned int n_step_matrices = 0;
 
     std::unique_ptr<MeshAdaptor<dim>>          mesh_adaptor;
     std::unique_ptr<Postprocess::Manager<dim>> postprocessors;

@@ -2,7 +2,9 @@
 #define dyncontact_output_run_report_h
 
 #include <dyncontact/core/simulator_access.h>
+#include <dyncontact/output/summary.h>
 
+#include <functional>
 #include <string>
 
 namespace dyncontact
@@ -23,11 +25,15 @@ namespace dyncontact
 
     /// Prints the summary and writes summary.txt (rank 0); @p wall_time
     /// and @p loop_wall_time: of the run and of its time loop (s);
-    /// @p step_matrices: the step matrices S built in the whole run.
+    /// @p step_matrices: the step matrices S built in the whole run;
+    /// @p statistics_lines: the statistics' own lines for the summary's
+    /// input (Postprocess::Manager::summary()).
     void
     write_summary(const double       wall_time,
                   const double       loop_wall_time,
-                  const unsigned int step_matrices) const;
+                  const unsigned int step_matrices,
+                  const std::function<std::string(const SummaryInput &)>
+                    &statistics_lines) const;
   };
 } // namespace dyncontact
 

@@ -37,16 +37,15 @@ namespace dyncontact
 
   /**
    * The summary of a run, from its statistics table alone (so that a test
-   * can check every figure against statistics.tsv): the contact intervals,
-   * the peak contact force and pressure, the energy balance (E + W_visc at
-   * the start and the end, the largest increase between steps and whether
-   * Theorem 3.2 held within the monitor's tolerance), the largest
-   * penetration, the sum of meas Gamma*, the errors against an exact
-   * solution or a reference, the iterations and the timer sections. Lines
-   * of the form "name: value".
+   * can check every figure against statistics.tsv): the steps and the time,
+   * adaptive tau, then @p statistics_lines (each statistic's own:
+   * Postprocess::Interface::summary()), the preconditioner and the timer
+   * sections. Lines of the form "name: value".
    */
   std::string
-  summary_text(const Statistics &statistics, const SummaryInput &input);
+  summary_text(const Statistics   &statistics,
+               const SummaryInput &input,
+               const std::string  &statistics_lines);
 } // namespace dyncontact
 
 #endif

@@ -4,6 +4,7 @@
 #include <dyncontact/base/plugins.h>
 #include <dyncontact/base/statistics.h>
 #include <dyncontact/core/simulator_access.h>
+#include <dyncontact/output/summary.h>
 
 #include <fstream>
 #include <map>
@@ -81,6 +82,23 @@ namespace dyncontact
       virtual void
       execute(std::vector<double> &row) = 0;
 
+      /// Its lines of summary.txt ("name: value ..."), from the table of
+      /// the whole run @p statistics alone, so that a test can check every
+      /// figure against statistics.tsv.
+      virtual std::string
+      summary(const Statistics &, const SummaryInput &) const
+      {
+        return "";
+      }
+
+      /// Orders the statistics' lines in summary.txt (their columns are
+      /// ordered by the registration's position).
+      virtual unsigned int
+      summary_position() const
+      {
+        return 0;
+      }
+
       /// Accumulators a resumed run needs (checkpoints).
       virtual void
       save(std::map<std::string, std::string> &) const
@@ -89,6 +107,13 @@ namespace dyncontact
       load(const std::map<std::string, std::string> &)
       {}
     };
+
+
+
+    /// The summary line of an error column @p name: its last value and its
+    /// largest, with their times.
+    std::string
+    error_summary(const Statistics &statistics, const std::string &name);
 
 
 
@@ -145,6 +170,11 @@ namespace dyncontact
       /// without a value).
       void
       check_last_row() const;
+
+      /// The lines every statistic contributes to summary.txt, in the order
+      /// of their summary positions.
+      std::string
+      summary(const SummaryInput &input) const;
 
       /// The rows so far and every postprocessor's accumulators.
       void

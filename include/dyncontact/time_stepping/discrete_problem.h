@@ -1,0 +1,166 @@
+#ifndef dyncontact_time_stepping_discrete_problem_h
+#define dyncontact_time_stepping_discrete_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <dyncontact/contact/active_set_solver.h>
+#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/time_step_controller.h>
+
+#include <functional>
+#include <memory>
+#include <utility>
+
+namespace dyncontact
+{
+  template <int dim>
+  class Scene;
+  template <int dim>
+  class SemiDiscreteSystem;
+  template <int dim>
+  class ContactSetup;
+
+  /**
+   * What a step solves, on the current mesh: the triangulation, its
+   * semi-discrete system (DoFs, constraints, M, A, B, f), the contact rows,
+   * the scheme's integrator, and the state: (u, udot), and (u_old,
+   * udot_old) where the present step started from. The Simulator sets it
+   * up, steps it and adapts its mesh; statistics read it through
+   * SimulatorAccess. tau is the TimeStepController's.
+   */
+  template <int dim>
+  class DiscreteProblem
+  {
+  public:
+    /// Reads the parameters of the system, the contact rows and the
+    /// active-set solver from @p prm.
+    DiscreteProblem(ParameterHandler         &prm,
+                    const Scheme             &scheme,
+                    TimeStepController       &time_step_controller,
+                    const ConditionalOStream &pcout,
+                    const MPI_Comm            comm);
+
+    ~DiscreteProblem();
+
+    /// The scene's coarse mesh, refined @p n_refinements times unless
+    /// @p coarse_only (a resumed run loads its mesh onto the coarse one).
+    void
+    build_mesh(const Scene<dim>  &scene,
+               const unsigned int n_refinements,
+               const bool         coarse_only,
+               TimerOutput       &timer);
+
+    /// DoFs, matrices and contact rows on the current mesh.
+    void
+    setup(const Scene<dim> &scene, TimerOutput &timer);
+
+    /// The step matrix, its preconditioner and the active-set solvers for
+    /// the controller's tau.
+    void
+    make_integrator(TimerOutput &timer);
+
+    /// An initially penetrating u (allowed only with 'Initial penetration
+    /// = project'): its M-projection onto K_h, with a warning.
+    void
+    project_initial_penetration();
+
+    /// One step from (u, udot) = (u_old, udot_old) at time @p time (step
+    /// @p step): trial steps with the TimeStepController's tau until it
+    /// accepts one (it retries after a failed solve, a located contact
+    /// event, an error estimate above the tolerance). A failed trial that
+    /// cannot be retried leaves the state as it was and reports failed.
+    struct Outcome
+    {
+      TimeStepController::AcceptedStep step;
+      bool                             failed = false;
+      /// of a failed trial: whether its solution was finite
+      bool finite = true;
+    };
+    Outcome
+    take_step(const double time, const unsigned int step, TimerOutput &timer);
+
+    /// Refines and coarsens the cells @p mark_cells marks, transfers (u,
+    /// udot) and sets up everything anew; returns the energy change of the
+    /// transfer and the largest violation of the new K_h that was projected
+    /// away.
+    std::pair<double, double>
+    adapt_mesh(const Scene<dim>            &scene,
+               const std::function<void()> &mark_cells,
+               TimerOutput                 &timer);
+
+    /// Swaps (u, udot, report) with (u_old, udot_old, initial_report):
+    /// after the first step, the initial state (and back).
+    void
+    swap_with_initial_state();
+
+    /// Step matrices S built so far, by all integrators.
+    unsigned int
+    n_step_matrices() const;
+
+    /// A resumed run: the step matrices the run before the checkpoint
+    /// built (the present integrator's count on top).
+    void
+    set_n_earlier_step_matrices(const unsigned int n);
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    const MappingQ1<dim>                      mapping;
+
+    const SemiDiscreteSystem<dim> &
+    get_system() const
+    {
+      return *system;
+    }
+    SemiDiscreteSystem<dim> &
+    get_system()
+    {
+      return *system;
+    }
+    const ContactSetup<dim> &
+    get_contact() const
+    {
+      return *contact;
+    }
+    const TimeIntegrator &
+    get_integrator() const
+    {
+      return *integrator;
+    }
+    TimeIntegrator &
+    get_integrator()
+    {
+      return *integrator;
+    }
+    const ActiveSetSolver::Parameters &
+    get_solver_parameters() const
+    {
+      return solver_parameters;
+    }
+
+    VectorType u, udot, u_old, udot_old;
+    /// the last trial step's, and the initial velocity's (eq. 12c)
+    StepReport report, initial_report;
+
+  private:
+    /// Warns once if S = M + tau^2/4 A + tau/2 B keeps the mass only to a
+    /// poor relative accuracy.
+    void
+    check_inertia();
+
+    const MPI_Comm                           comm;
+    const ConditionalOStream                &pcout;
+    const Scheme                            &scheme;
+    TimeStepController                      &time_step_controller;
+    ActiveSetSolver::Parameters              solver_parameters;
+    std::unique_ptr<SemiDiscreteSystem<dim>> system;
+    std::unique_ptr<ContactSetup<dim>>       contact;
+    std::unique_ptr<TimeIntegrator>          integrator;
+    bool                                     warned_inertia = false;
+    /// built by the integrators of earlier meshes
+    unsigned int n_earlier_step_matrices = 0;
+  };
+} // namespace dyncontact
+
+#endif

@@ -1,0 +1,279 @@
+#include <deal.II/base/mpi.h>
+
+#include <dyncontact/base/memory_check.h>
+#include <dyncontact/base/vector_copy.h>
+#include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/discrete_problem.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+  template <int dim>
+  DiscreteProblem<dim>::DiscreteProblem(
+    ParameterHandler         &prm,
+    const Scheme             &scheme,
+    TimeStepController       &time_step_controller,
+    const ConditionalOStream &pcout,
+    const MPI_Comm            comm)
+    : triangulation(comm)
+    , comm(comm)
+    , pcout(pcout)
+    , scheme(scheme)
+    , time_step_controller(time_step_controller)
+  {
+    solver_parameters.parse_parameters(prm);
+    typename SemiDiscreteSystem<dim>::Parameters system_parameters;
+    system_parameters.parse_parameters(prm);
+    system = std::make_unique<SemiDiscreteSystem<dim>>(system_parameters,
+                                                       mapping,
+                                                       comm);
+    typename ContactSetup<dim>::Parameters contact_parameters;
+    contact_parameters.parse_parameters(prm);
+    contact = std::make_unique<ContactSetup<dim>>(contact_parameters, comm);
+  }
+
+
+
+  template <int dim>
+  DiscreteProblem<dim>::~DiscreteProblem() = default;
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::build_mesh(const Scene<dim>  &scene,
+                                   const unsigned int n_refinements,
+                                   const bool         coarse_only,
+                                   TimerOutput       &timer)
+  {
+    TimerOutput::Scope t(timer, "setup: mesh");
+    dyncontact::build_mesh(scene,
+                           triangulation,
+                           n_refinements,
+                           system->get_fe().degree,
+                           coarse_only);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::setup(const Scene<dim> &scene, TimerOutput &timer)
+  {
+    {
+      TimerOutput::Scope t(timer, "setup: DoFs and sparsity");
+      system->setup(triangulation, scene);
+      // the dynamic sparsity pattern's rows
+      release_freed_memory();
+      pcout << "   cells: " << triangulation.n_global_active_cells()
+            << ", DoFs: " << system->get_dof_handler().n_dofs() << std::endl;
+    }
+    {
+      TimerOutput::Scope t(timer, "assembly");
+      system->assemble(scene);
+    }
+    TimerOutput::Scope t(timer, "contact rows");
+    contact->setup(scene, *system, mapping, pcout);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::make_integrator(TimerOutput &timer)
+  {
+    TimerOutput::Scope t(timer, "setup: step matrix and preconditioner");
+    if (integrator)
+      n_earlier_step_matrices +=
+        integrator->get_operators().n_step_matrices_built;
+    ActiveSetSolver::NearNullSpace near_null_space;
+    near_null_space.translations = system->get_constant_modes();
+    if (solver_parameters.amg_rotations)
+      near_null_space.rotations = system->rotation_modes();
+    integrator =
+      std::make_unique<TimeIntegrator>(scheme,
+                                       time_step_controller.get_timestep(),
+                                       system->matrices(),
+                                       solver_parameters,
+                                       system->locally_owned_dofs(),
+                                       system->locally_relevant_dofs(),
+                                       system->get_constraints(),
+                                       contact->get_rows(),
+                                       near_null_space,
+                                       comm);
+    // ML's temporaries
+    release_freed_memory();
+    check_inertia();
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::check_inertia()
+  {
+    if (warned_inertia)
+      return;
+    const std::string warning = integrator->inertia_warning();
+    warned_inertia            = !warning.empty();
+    pcout << warning;
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::project_initial_penetration()
+  {
+    double largest = 0.;
+    for (const double v : contact->get_row_operator().constraint_values(u))
+      largest = std::max(largest, v);
+    largest = Utilities::MPI::max(largest, comm);
+    if (largest > 1e-12)
+      {
+        integrator->project_onto_constraints(u);
+        pcout << "   warning: the initial configuration penetrated by up to "
+              << largest << " m; the initial displacement was projected onto "
+              << "K_h." << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  typename DiscreteProblem<dim>::Outcome
+  DiscreteProblem<dim>::take_step(const double       time,
+                                  const unsigned int step,
+                                  TimerOutput       &timer)
+  {
+    copy_with_layout(u_old, u);
+    copy_with_layout(udot_old, udot);
+    // where the step starts from: its active sets
+    const auto start_sets = integrator->active_sets();
+    time_step_controller.begin_step(time);
+    while (true)
+      {
+        const double tau = time_step_controller.trial_timestep();
+        {
+          TimerOutput::Scope t(timer, "time step");
+          report = integrator->step(tau,
+                                    !time_step_controller.step_is_shortened(),
+                                    u,
+                                    udot);
+        }
+        check_inertia();
+        const bool finite =
+          std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
+        if (!report.converged() || !finite)
+          {
+            // back to the last good state, warm started from the failed
+            // trial's active sets: retry with a smaller step, or stop
+            const auto active = integrator->active_sets();
+            u                 = u_old;
+            udot              = udot_old;
+            if (!time_step_controller.retry_after_failure())
+              return {{}, true, finite};
+            pcout << "   warning: step " << step + 1 << " (t = " << time
+                  << " s) failed; retrying with tau = "
+                  << time_step_controller.get_timestep() << " s" << std::endl;
+            integrator->warm_start(active.first, active.second);
+            continue;
+          }
+        if (time_step_controller.is_adaptive())
+          {
+            TimerOutput::Scope t(timer, "time step control");
+            if (time_step_controller.judge(integrator->get_operators(),
+                                           contact->get_row_operator(),
+                                           start_sets.first,
+                                           u_old,
+                                           udot_old,
+                                           u,
+                                           udot,
+                                           report,
+                                           comm) ==
+                TimeStepController::Verdict::retry)
+              {
+                // from the start of the step, with its active sets
+                u    = u_old;
+                udot = udot_old;
+                integrator->warm_start(start_sets.first, start_sets.second);
+                continue;
+              }
+          }
+        return {time_step_controller.accept(), false, true};
+      }
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  DiscreteProblem<dim>::adapt_mesh(const Scene<dim>            &scene,
+                                   const std::function<void()> &mark_cells,
+                                   TimerOutput                 &timer)
+  {
+    const double energy_before = system->total_energy(u, udot);
+    {
+      TimerOutput::Scope t(timer, "mesh adaptation");
+      mark_cells();
+      // transfer u and udot to the new mesh (p4est repartitions it)
+      triangulation.prepare_coarsening_and_refinement();
+      system->prepare_for_refinement(u, udot);
+      triangulation.execute_coarsening_and_refinement();
+    }
+    setup(scene, timer);
+    {
+      TimerOutput::Scope t(timer, "mesh adaptation");
+      system->interpolate_after_refinement(u, udot);
+    }
+    // the estimates and the rows' states refer to the old mesh
+    time_step_controller.reset(contact->get_rows().size());
+    make_integrator(timer);
+
+    // the transferred displacement may violate the new K_h: back onto it
+    double violation;
+    {
+      TimerOutput::Scope t(timer, "mesh adaptation");
+      violation =
+        integrator->restore_constraints(u, contact->get_row_operator());
+    }
+    return {system->total_energy(u, udot) - energy_before, violation};
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::swap_with_initial_state()
+  {
+    std::swap(u, u_old);
+    std::swap(udot, udot_old);
+    std::swap(report, initial_report);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DiscreteProblem<dim>::n_step_matrices() const
+  {
+    return n_earlier_step_matrices +
+           (integrator ? integrator->get_operators().n_step_matrices_built : 0);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::set_n_earlier_step_matrices(const unsigned int n)
+  {
+    n_earlier_step_matrices = n;
+  }
+
+  template class DiscreteProblem<2>;
+  template class DiscreteProblem<3>;
+} // namespace dyncontact
