@@ -276,6 +276,25 @@ main(int argc, char **argv)
                               "    set Initial velocity of body 2 = 0, "
                                   "fast\n"),
          "Scene/Gmsh/Initial velocity of body 2"},
+    {"gmsh",
+         "a third velocity component in 2D",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh",
+                              "    set Initial velocity of body 2 = 0, "
+                                  "0, 5\n"),
+         "Initial velocity of body 2 has a third component in 2D"},
+    {"gmsh",
+         "velocity 1e300",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh",
+                              "    set Initial velocity of body 2 = 1e300, "
+                                  "0\n"),
+         "Initial velocity of body 2: each component must lie in [-1e+09"},
+    {"gmsh",
+         "contact tag on a clamped face",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Dirichlet tags = 10, 11\n"),
+         "tag 11 is in both Dirichlet tags and Contact tags of body 1"},
     // damaged checkpoints
     {"checkpoint",
          "truncated data file",
@@ -436,7 +455,27 @@ main(int argc, char **argv)
          "hertz: Load 1e300",
          scene_prm("hertz", "    set Load = 1e300\n"),
          "Scene/Hertz/Load"},
+    {"range",
+         "Rotation angle 1e300",
+         bar("    set Rotation angle = 1e300\n"),
+         "Scene/Bar impact/Rotation angle = '1e300' is refused; the values "
+             "allowed are [Double -360...360"},
+    {"range",
+         "Body force 1e300",
+         bar("    set Body force = 1e300\n"),
+         "Scene/Bar impact/Body force = '1e300' is refused"},
+    {"range",
+         "Output interval nan",
+         "subsection Output\n  set Output interval = nan\nend\n",
+         "Output/Output interval = 'nan' is refused; the values allowed are "
+             "[Double 0..."},
     // incompatible options
+    {"incompatible",
+         "reference states every 0.03 s with Time step 0.0125 s",
+         "subsection Reference solution\n  set Write states = true\n  set "
+             "Interval = 0.03\nend\n",
+         "Reference solution/Interval = 0.03 s is not a multiple of Time "
+             "integration/Time step = 0.0125 s"},
     {"incompatible",
          "Initial strain with Fixed far end",
          bar("    set Initial strain = 0.01\n    set Fixed far end = true\n"),

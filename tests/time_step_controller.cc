@@ -160,7 +160,7 @@ main(int argc, char **argv)
           std::string("set Time step control = adaptive\nset Minimum time "
                       "step = 1"),
           std::string("set Time step control = adaptive\nset Time step "
-                      "tolerance = -1")})
+                      "tolerance = 0")})
       {
         parse(prm, entry);
         std::string message;

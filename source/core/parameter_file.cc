@@ -176,6 +176,50 @@ namespace dyncontact
         }
       return names;
     }
+
+
+
+    /// Stops with a message naming the entry (subsection/.../@p entry),
+    /// @p value and the values its pattern allows (for a number: its
+    /// range) unless @p value matches the pattern declared in @p prm.
+    void
+    check_value(ParameterHandler               &prm,
+                const std::vector<std::string> &path,
+                const std::string              &entry,
+                const std::string              &value,
+                const std::string              &at)
+    {
+      std::string name;
+      for (const auto &p : path)
+        {
+          prm.enter_subsection(p);
+          name += p + "/";
+        }
+      std::string allowed;
+      try
+        {
+          prm.set(entry, value);
+        }
+      catch (const ParameterHandler::ExcValueDoesNotMatchPattern &e)
+        {
+          // "... does not match the given pattern <[Double 0...1]>."
+          std::ostringstream info;
+          e.print_info(info);
+          const std::string text  = info.str();
+          const std::size_t begin = text.find("pattern <");
+          const std::size_t end   = text.rfind('>');
+          allowed = (begin == std::string::npos || end == std::string::npos ||
+                     end < begin + 9) ?
+                      text :
+                      text.substr(begin + 9, end - begin - 9);
+        }
+      for (std::size_t k = 0; k < path.size(); ++k)
+        prm.leave_subsection();
+      AssertThrow(allowed.empty(),
+                  ExcMessage(at + name + entry + " = '" + value +
+                             "' is refused; the values allowed are " +
+                             Utilities::trim(allowed) + "."));
+    }
   } // namespace
 
 
@@ -210,8 +254,19 @@ namespace dyncontact
             std::string where;
             for (const auto &p : path)
               where += p + "/";
+            const std::string at =
+              "Line " + std::to_string(line_number) + " of '" + source + "': ";
             if (declared.count(where + entry))
-              continue;
+              {
+                // a value continued on the next line is left to the parser
+                if (line.back() != '\\')
+                  check_value(prm,
+                              path,
+                              entry,
+                              Utilities::trim(line.substr(line.find('=') + 1)),
+                              at);
+                continue;
+              }
             // the subsections that do declare an entry of this name
             const std::string name = (path.size() == 1 && path[0] == "Scene" &&
                                       entry == "Contact search radius") ?
@@ -227,8 +282,6 @@ namespace dyncontact
                               full.substr(0, full.size() - name.size() - 1);
             if (candidates.empty())
               continue; // the parser's own message names the entry
-            const std::string at =
-              "Line " + std::to_string(line_number) + " of '" + source + "': ";
             AssertThrow(!(path.size() == 1 && path[0] == "Scene"),
                         ExcMessage(at + "'Scene/" + entry +
                                    "' has moved: each scene reads its own "

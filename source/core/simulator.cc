@@ -55,13 +55,8 @@ namespace dyncontact
       checkpoints.add_critical_parameter(scene->subsection() +
                                            "/(checksum of the input files)",
                                          scene->input_checksum());
-    AssertThrow(!(mesh_adaptor->adapts_during_run() &&
-                  (reference_states->writes() || reference_states->compares())),
-                ExcMessage(
-                  "Reference solutions need the same mesh in both "
-                  "runs: they cannot be combined with adaptive "
-                  "meshes (Mesh refinement/Refinement interval > 0)."));
-
+    reference_states->constrain(time_step_controller,
+                                mesh_adaptor->adapts_during_run());
     mesh_adaptor->initialize_simulator(*this);
     vtu_writer->initialize_simulator(*this);
     reference_states->initialize_simulator(*this);

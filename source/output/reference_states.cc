@@ -4,6 +4,7 @@
 #include <dyncontact/base/collective_errors.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/output/reference_states.h>
+#include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <cmath>
 #include <filesystem>
@@ -50,7 +51,8 @@ namespace dyncontact
                       "0.1",
                       Patterns::Double(0.),
                       "Time between two reference states, in s (> 0; a "
-                      "multiple of the time steps of both runs).");
+                      "multiple of a fixed Time step; with Time step control "
+                      "= adaptive the steps end at its multiples).");
     prm.leave_subsection();
   }
 
@@ -71,6 +73,23 @@ namespace dyncontact
                            "or compares with them, not both."));
     AssertThrow(interval > 0.,
                 ExcMessage("Reference solution/Interval must be > 0 (s)."));
+  }
+
+
+
+  template <int dim>
+  void
+  ReferenceStates<dim>::constrain(TimeStepController &controller,
+                                  const bool          adaptive_mesh) const
+  {
+    if (!write_states && !compare_states)
+      return;
+    AssertThrow(!adaptive_mesh,
+                ExcMessage(
+                  "Reference solutions need the same mesh in both "
+                  "runs: they cannot be combined with adaptive "
+                  "meshes (Mesh refinement/Refinement interval > 0)."));
+    controller.stop_at_multiples_of(interval, "Reference solution/Interval");
   }
 
 

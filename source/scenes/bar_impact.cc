@@ -67,23 +67,23 @@ namespace dyncontact
     prm.enter_subsection("Bar impact");
     prm.declare_entry("Length",
                       "1",
-                      Patterns::Double(),
+                      Patterns::Double(1e-9, 1e9),
                       "Length L of the bar along x, in m, 1e-9 to 1e9.");
     prm.declare_entry("Height",
                       "0.1",
-                      Patterns::Double(),
+                      Patterns::Double(1e-9, 1e9),
                       "Height (and, in 3D, width) of the bar, in "
                       "m, 1e-9 to 1e9, and at least 1/1000 of a cell's "
                       "length.");
     prm.declare_entry("Impact velocity",
                       "1",
-                      Patterns::Double(),
+                      Patterns::Double(0., 1e9),
                       "Initial speed v0 towards the wall, in m/s, "
                       "0 to 1e9 (0: the bar rests; it touches the wall only "
                       "if Initial gap <= 0 or a load pushes it).");
     prm.declare_entry("Initial gap",
                       "0.1",
-                      Patterns::Double(),
+                      Patterns::Double(-1e9, 1e9),
                       "Distance g0 between the bar's end x = 0 "
                       "and the wall at x = -g0, in m (negative: the bar "
                       "starts inside the wall; see Contact "
@@ -96,7 +96,7 @@ namespace dyncontact
                       "from the aspect ratio (at least one).");
     prm.declare_entry("Initial strain",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(-1., 1.),
                       "A uniform initial axial strain eps0 (u0 = "
                       "eps0 x e_x, dimensionless, > -1); nonzero values make "
                       "the bar vibrate. The exact solution then follows from "
@@ -110,13 +110,13 @@ namespace dyncontact
                       "(homogeneous Dirichlet data, all components).");
     prm.declare_entry("Body force",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(-1e15, 1e15),
                       "A constant body force density along the "
                       "bar's axis, in N/m^3; positive values point along "
                       "+e_x, away from the wall (which is at x = -g0).");
     prm.declare_entry("End traction",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(-1e15, 1e15),
                       "A constant traction along the bar's axis "
                       "on the end x = 0 (a Neumann boundary that is also "
                       "the contact boundary), in Pa; positive values point "
@@ -124,7 +124,7 @@ namespace dyncontact
                       "it), negative values press it towards the wall.");
     prm.declare_entry("Rotation angle",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(-360., 360.),
                       "The whole scene (bar, velocity, wall) is "
                       "rotated by this angle about the z axis, in degrees, so "
                       "that the wall normal need not be a coordinate axis.");

@@ -4,6 +4,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <dyncontact/base/checksum.h>
+#include <dyncontact/base/input_checks.h>
 #include <dyncontact/scenes/gmsh_scene.h>
 #include <dyncontact/scenes/msh_check.h>
 
@@ -40,15 +41,18 @@ namespace dyncontact
 
     template <int dim>
     Tensor<1, dim>
-    parse_vector(const std::string &text, const std::string &entry)
+    parse_vector(const std::string &text,
+                 const std::string &entry,
+                 const double       max_component,
+                 const std::string &unit)
     {
       const auto items = Utilities::split_string_list(text, ',');
       AssertThrow(
         items.size() == dim || (dim == 2 && items.size() == 3),
         ExcMessage("Scene/Gmsh/" + entry + " must have " + std::to_string(dim) +
                    " comma-separated components; got '" + text + "'."));
-      Tensor<1, dim> v;
-      for (unsigned int d = 0; d < dim; ++d)
+      Tensor<1, dim + 1> v;
+      for (unsigned int d = 0; d < items.size(); ++d)
         {
           char *end = nullptr;
           v[d]      = std::strtod(items[d].c_str(), &end);
@@ -56,8 +60,23 @@ namespace dyncontact
                       ExcMessage("Scene/Gmsh/" + entry +
                                  " must have finite components; got '" + text +
                                  "'."));
+          AssertThrow(std::abs(v[d]) <= max_component,
+                      ExcMessage("Scene/Gmsh/" + entry +
+                                 ": each component must lie in [-" +
+                                 format_number(max_component) + ", " +
+                                 format_number(max_component) + "] " + unit +
+                                 "; got '" + text + "'."));
         }
-      return v;
+      // the default has three components; in 2D the third must be zero
+      AssertThrow(items.size() == dim || v[dim] == 0.,
+                  ExcMessage("Scene/Gmsh/" + entry +
+                             " has a third component in 2D (Dimension = 2): "
+                             "it must be 0 or left out; got '" +
+                             text + "'."));
+      Tensor<1, dim> result;
+      for (unsigned int d = 0; d < dim; ++d)
+        result[d] = v[d];
+      return result;
     }
 
     std::string
@@ -229,7 +248,8 @@ namespace dyncontact
                       "0, 0, 0",
                       Patterns::Anything(),
                       "The traction on the Neumann boundaries, "
-                      "components in Pa.");
+                      "components in Pa, each in [-1e15, 1e15] (in 2D a third "
+                      "component must be 0).");
     prm.declare_entry("Contact tags of body 1",
                       "",
                       Patterns::Anything(),
@@ -243,16 +263,19 @@ namespace dyncontact
     prm.declare_entry("Initial velocity of body 1",
                       "0, 0, 0",
                       Patterns::Anything(),
-                      "Initial velocity of body 1, components in m/s.");
+                      "Initial velocity of body 1, components in m/s, each in "
+                      "[-1e9, 1e9] (in 2D a third component must be 0).");
     prm.declare_entry("Initial velocity of body 2",
                       "0, 0, 0",
                       Patterns::Anything(),
-                      "Initial velocity of body 2, components in m/s.");
+                      "Initial velocity of body 2, components in m/s, each in "
+                      "[-1e9, 1e9] (in 2D a third component must be 0).");
     prm.declare_entry("Gravity",
                       "0, 0, 0",
                       Patterns::Anything(),
                       "Gravitational acceleration g, components in "
-                      "m/s^2; the body force is rho g.");
+                      "m/s^2, each in [-1e15, 1e15] (in 2D a third component "
+                      "must be 0); the body force is rho g.");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -270,8 +293,10 @@ namespace dyncontact
     body_tags[1]   = parse_tags(prm.get("Body 2 tags"), "Body 2 tags");
     dirichlet_tags = parse_tags(prm.get("Dirichlet tags"), "Dirichlet tags");
     neumann_tags   = parse_tags(prm.get("Neumann tags"), "Neumann tags");
-    traction =
-      parse_vector<dim>(prm.get("Neumann traction"), "Neumann traction");
+    traction       = parse_vector<dim>(prm.get("Neumann traction"),
+                                 "Neumann traction",
+                                 1e15,
+                                 "Pa");
     for (unsigned int b = 0; b < 2; ++b)
       {
         const std::string entry =
@@ -280,9 +305,9 @@ namespace dyncontact
           contact_tags[b].push_back(tag);
         const std::string v =
           "Initial velocity of body " + std::to_string(b + 1);
-        velocity[b] = parse_vector<dim>(prm.get(v), v);
+        velocity[b] = parse_vector<dim>(prm.get(v), v, 1e9, "m/s");
       }
-    gravity = parse_vector<dim>(prm.get("Gravity"), "Gravity");
+    gravity = parse_vector<dim>(prm.get("Gravity"), "Gravity", 1e15, "m/s^2");
     prm.leave_subsection();
     prm.leave_subsection();
 
@@ -306,6 +331,16 @@ namespace dyncontact
                 ExcMessage("Scene/Gmsh: contact needs two bodies, and "
                            "contact tags on both (Contact tags of body 1 and "
                            "2)."));
+    for (unsigned int b = 0; b < 2; ++b)
+      for (const auto tag : contact_tags[b])
+        AssertThrow(dirichlet_tags.count(tag) == 0,
+                    ExcMessage("Scene/Gmsh: tag " + std::to_string(tag) +
+                               " is in both Dirichlet tags and Contact tags "
+                               "of body " +
+                               std::to_string(b + 1) +
+                               ": a clamped face gets no contact rows, and "
+                               "the bodies would pass through each other "
+                               "there. Take it out of one of them."));
   }
 
 

@@ -31,29 +31,29 @@ namespace dyncontact
     prm.enter_subsection(subsection);
     prm.declare_entry("Radius",
                       "1",
-                      Patterns::Double(),
+                      Patterns::Double(1e-9, 1e9),
                       "Radius R of the cylinder or "
                       "ball, in m (> 0).");
     prm.declare_entry("Block width",
                       "4",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Width of the meshed (half) "
                       "block from the symmetry plane, in m (> Radius).");
     prm.declare_entry("Block depth",
                       "4",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Depth of the block below its "
                       "top y = 0, in m (> 0).");
     prm.declare_entry("Load",
                       "0.005",
-                      Patterns::Double(),
+                      Patterns::Double(0., 1e30),
                       "Total load pressing the "
                       "cylinder (per unit thickness, N/m, in 2D) or the ball "
                       "(N, in 3D) into the block, applied as a uniform "
                       "traction on its flat top (>= 0).");
     prm.declare_entry("Drop velocity",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(0., 1e9),
                       "Initial downward speed of the "
                       "cylinder or ball, in m/s (>= 0).");
     prm.declare_entry("Contact zone refinements",
@@ -91,7 +91,7 @@ namespace dyncontact
       "otherwise.");
     prm.declare_entry("Initial gap",
                       "0.1",
-                      Patterns::Double(),
+                      Patterns::Double(0., 1e9),
                       "Distance between the lowest point of the cylinder or "
                       "ball and the block's top, in m (>= 0).");
     prm.leave_subsection();

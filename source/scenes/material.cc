@@ -25,28 +25,28 @@ namespace dyncontact
     prm.enter_subsection(subsection);
     prm.declare_entry("Young's modulus",
                       "1",
-                      Patterns::Double(),
+                      Patterns::Double(1e-12, 1e15),
                       "Young's modulus E of the body, in Pa, 1e-12 to 1e15.");
     prm.declare_entry("Poisson's ratio",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(-1., 0.5),
                       "Poisson's ratio nu of the body, dimensionless, in "
                       "(-1, 0.5).");
     prm.declare_entry("Density",
                       "1",
-                      Patterns::Double(),
+                      Patterns::Double(1e-9, 1e6),
                       "Mass density rho, in kg/m^3, 1e-9 to 1e6.");
     prm.declare_entry(
       "Viscous shear modulus",
       "0",
-      Patterns::Double(),
+      Patterns::Double(0., 1e18),
       "Kelvin-Voigt viscous shear modulus mu_v, in Pa s, 0 to 1e18. Together "
       "with the viscous Lame parameter it defines the viscous form b(u,v) = "
       "int 2 mu_v eps(u):eps(v) + lambda_v div u div v. Both zero: an "
       "elastic body, and no viscous matrix is assembled.");
     prm.declare_entry("Viscous Lame parameter",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(-1e18, 1e18),
                       "Kelvin-Voigt viscous Lame parameter lambda_v, in Pa s "
                       "(>= 0).");
     prm.leave_subsection();

@@ -18,20 +18,20 @@ namespace dyncontact
     prm.enter_subsection("Two bars");
     prm.declare_entry("Length",
                       "1",
-                      Patterns::Double(),
+                      Patterns::Double(1e-9, 1e9),
                       "Length L of each bar, in m (> 0).");
     prm.declare_entry("Height",
                       "0.1",
-                      Patterns::Double(),
+                      Patterns::Double(1e-9, 1e9),
                       "Height (and, in 3D, width) of the bars, in m (> 0).");
     prm.declare_entry("Impact velocity",
                       "1",
-                      Patterns::Double(),
+                      Patterns::Double(0., 1e9),
                       "Initial speed v0 of each bar towards the other, in "
                       "m/s (>= 0).");
     prm.declare_entry("Initial gap",
                       "0.1",
-                      Patterns::Double(),
+                      Patterns::Double(0., 1e9),
                       "Distance g0 of each bar's contact end from the "
                       "mid-plane x = 0, in m (>= 0; the bars are 2 g0 "
                       "apart).");

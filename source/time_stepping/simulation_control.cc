@@ -18,7 +18,7 @@ namespace dyncontact
     prm.enter_subsection("Time integration");
     prm.declare_entry("End time",
                       "2.5",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Final time T, in s (>= 0). If T is not a multiple of "
                       "tau, the last step ends after T.");
     prm.leave_subsection();
@@ -26,7 +26,7 @@ namespace dyncontact
     prm.enter_subsection("Output");
     prm.declare_entry("Output interval",
                       "0.05",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Time between two output times, in s (>= 0; 0: every "
                       "step): VTU files are written then (if Write vtu), and "
                       "the energy-norm error is integrated then (with "

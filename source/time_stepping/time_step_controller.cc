@@ -19,7 +19,7 @@ namespace dyncontact
     prm.enter_subsection("Time integration");
     prm.declare_entry("Time step",
                       "0.0125",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Time step tau, in s (> 0).");
     prm.declare_entry("Time step adaptation",
                       "false",
@@ -51,17 +51,17 @@ namespace dyncontact
       "shortened, each with its own step matrix); none.");
     prm.declare_entry("Minimum time step",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Smallest tau of the adaptive control, in s (> 0 and "
                       "<= Time step; 0 means Time step / 64).");
     prm.declare_entry("Maximum time step",
                       "0",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Largest tau of the adaptive control, in s (>= Time "
                       "step; 0 means Time step).");
     prm.declare_entry("Time step tolerance",
                       "0.01",
-                      Patterns::Double(),
+                      Patterns::Double(0.),
                       "Adaptive control: the largest error estimate of a "
                       "step that is accepted, relative to the velocity "
                       "scale sqrt(2 E) (dimensionless, > 0).");
@@ -149,6 +149,28 @@ namespace dyncontact
 
 
   void
+  TimeStepController::stop_at_multiples_of(const double       interval,
+                                           const std::string &entry)
+  {
+    if (is_static)
+      return;
+    const double k = interval / time_step;
+    AssertThrow(adaptive || (std::round(k) >= 1. &&
+                             std::abs(k - std::round(k)) <= 1e-9 * k),
+                ExcMessage(entry + " = " + format_number(interval) +
+                           " s is not a multiple of Time integration/Time "
+                           "step = " +
+                           format_number(time_step) +
+                           " s: the steps would miss its times. Choose a "
+                           "multiple, or 'Time integration/Time step "
+                           "control = adaptive' (its steps end at those "
+                           "times)."));
+    stop_interval = interval;
+  }
+
+
+
+  void
   TimeStepController::begin_step(const double time)
   {
     step_start    = time;
@@ -161,8 +183,18 @@ namespace dyncontact
   double
   TimeStepController::trial_timestep()
   {
-    if (adaptive && step_start + tau > end_time)
-      shorten(end_time - step_start);
+    if (adaptive)
+      {
+        double stop = end_time;
+        if (stop_interval > 0.)
+          // the next multiple of the interval after the step's start (a
+          // start within 1e-6 intervals of a multiple is at it)
+          stop = std::min(stop,
+                          (std::floor(step_start / stop_interval + 1e-6) + 1.) *
+                            stop_interval);
+        if (step_start + tau > stop)
+          shorten(stop - step_start);
+      }
     return tau;
   }
 

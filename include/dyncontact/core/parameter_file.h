@@ -20,7 +20,10 @@ namespace dyncontact
    * the old flat layout (e.g. "Length" directly in subsection Scene, which
    * moved to Scene/Bar impact, or "Slave side", which moved to Contact), or
    * an entry of another scene. The message names the line and the
-   * subsections that declare the entry. Called before the text is parsed.
+   * subsections that declare the entry. Also stops if a value does not match
+   * its entry's pattern (for a number: its range), naming the line, the
+   * entry with its subsections, the value and the values allowed. Called
+   * before the text is parsed.
    */
   void
   check_for_misplaced_entries(const std::string &text,

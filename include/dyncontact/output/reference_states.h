@@ -12,6 +12,8 @@ namespace dealii
 
 namespace dyncontact
 {
+  class TimeStepController;
+
   /**
    * Reference states (subsection "Reference solution"): a reference run
    * (same mesh, much smaller time step) writes u and udot at fixed times;
@@ -35,6 +37,12 @@ namespace dyncontact
     {
       return write_states;
     }
+
+    /// Reference states need the same mesh in both runs (refused if
+    /// @p adaptive_mesh) and steps that reach their times (@p controller
+    /// stops there). Nothing if the run neither writes nor compares.
+    void
+    constrain(TimeStepController &controller, const bool adaptive_mesh) const;
 
     /// Whether this run compares with reference states.
     bool

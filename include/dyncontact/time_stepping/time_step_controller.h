@@ -93,6 +93,14 @@ namespace dyncontact
     void
     reset(const std::size_t n_rows);
 
+    /// The steps must reach every multiple of @p interval (the times of
+    /// reference states, which a writing and a comparing run must both
+    /// reach): the adaptive control ends a step there where it would pass
+    /// one; a fixed Time step must divide it, or the run stops with a
+    /// message naming @p entry (the parameter that sets the interval).
+    void
+    stop_at_multiples_of(const double interval, const std::string &entry);
+
     /// A new step from @p time (until a trial is accepted).
     void
     begin_step(const double time);
@@ -218,15 +226,17 @@ namespace dyncontact
     shorten(const double new_tau);
 
     // parameters
-    double        time_step            = 0.0125;
-    bool          time_step_adaptation = false;
-    bool          is_static            = false;
-    bool          adaptive             = false;
-    double        min_time_step        = 0.;
-    double        max_time_step        = 0.;
-    double        tolerance            = 1e-2;
-    double        end_time             = 0.;
-    EventLocation event_location       = EventLocation::onset_and_separation;
+    double time_step            = 0.0125;
+    bool   time_step_adaptation = false;
+    bool   is_static            = false;
+    bool   adaptive             = false;
+    double min_time_step        = 0.;
+    double max_time_step        = 0.;
+    double tolerance            = 1e-2;
+    double end_time             = 0.;
+    /// stop_at_multiples_of()'s (0: none)
+    double        stop_interval  = 0.;
+    EventLocation event_location = EventLocation::onset_and_separation;
 
     // state
     double tau       = 0.0125;
