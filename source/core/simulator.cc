@@ -111,6 +111,7 @@ namespace dyncontact
   Simulator<dim>::open_outputs()
   {
     postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
+    vtu_writer->remove_later_files();
     if (vtu_writer->is_enabled() && !checkpoints.resume())
       {
         // the initial state: after a first step, the start of that step

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -491,6 +492,71 @@ namespace dyncontact
         DataOutBase::write_pvd_record(out, pvd_records);
       });
     stop_with_message_of_rank_0(failure, comm);
+  }
+
+
+
+  namespace
+  {
+    /// n of a file solution_<n>.pvtu or solution_<n>.<piece>.vtu (digits
+    /// only), -1 for any other name.
+    long long
+    solution_file_number(const std::string &name)
+    {
+      const auto digits = [](const std::string &text) {
+        return !text.empty() &&
+               text.find_first_not_of("0123456789") == std::string::npos;
+      };
+      const std::size_t dot = name.find('.');
+      if (name.rfind("solution_", 0) != 0 || dot == std::string::npos ||
+          !digits(name.substr(9, dot - 9)) || dot - 9 > 18)
+        return -1;
+      const std::string rest   = name.substr(dot + 1);
+      const std::size_t second = rest.find('.');
+      if (rest == "pvtu" ||
+          (second != std::string::npos && digits(rest.substr(0, second)) &&
+           rest.substr(second) == ".vtu"))
+        return std::stoll(name.substr(9, dot - 9));
+      return -1;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  VtuWriter<dim>::remove_later_files() const
+  {
+    namespace fs                = std::filesystem;
+    const MPI_Comm    comm      = this->get_mpi_communicator();
+    const std::string directory = this->get_parameters().output_directory;
+    std::string       failure;
+    unsigned int      n_removed = 0;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::vector<fs::path> later;
+        std::error_code       error;
+        for (const auto &entry : fs::directory_iterator(directory, error))
+          {
+            const std::string name = entry.path().filename().string();
+            const long long   n    = solution_file_number(name);
+            if ((n >= 0 &&
+                 static_cast<unsigned long long>(n) >= output_counter) ||
+                (name == "solution.pvd" && !write_vtu))
+              later.push_back(entry.path());
+          }
+        for (const fs::path &file : later)
+          if (fs::remove(file, error) && !error)
+            ++n_removed;
+          else if (failure.empty())
+            failure = "Cannot remove '" + file.string() +
+                      "', a file of an earlier run: " + error.message() + ".";
+      }
+    stop_with_message_of_rank_0(failure, comm);
+    if (n_removed > 0)
+      this->get_pcout() << "   removed " << n_removed
+                        << " solution files of an earlier run from '"
+                        << directory << "'" << std::endl;
   }
 
 

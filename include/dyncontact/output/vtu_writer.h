@@ -42,6 +42,15 @@ namespace dyncontact
     void
     write(const double time);
 
+    /// Removes the files solution_<n>.pvtu and solution_<n>.<piece>.vtu with
+    /// n from the first number this run writes on (an earlier run's, or
+    /// the interrupted run's after the checkpoint a resumed run starts
+    /// from), and, if this run writes no VTU, solution.pvd: so that the
+    /// output directory holds this run's files only. Says how many it
+    /// removed. Collective; stops the run if a file cannot be removed.
+    void
+    remove_later_files() const;
+
     /// The output counter and the .pvd history (checkpoints).
     void
     save(std::map<std::string, std::string> &state) const;
