@@ -1,7 +1,7 @@
 // The output directory holds one run's files: a run into the directory of an
-// earlier, longer run removes the earlier run's solution_* files with
-// numbers it does not write (they would sit in the folder beside its own,
-// and a file browser or a glob would mix the two runs), and a run without
+// earlier, longer run removes the earlier run's solution_* files from the
+// first number it writes on (those it does not overwrite would sit beside its
+// own, and a file browser or a glob would mix the two runs), and a run without
 // VTU output removes them all with the earlier solution.pvd.
 
 #include <filesystem>

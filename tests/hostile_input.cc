@@ -1,7 +1,8 @@
 // Hostile input, by class of failure (issue "Trust"): include cycles, Gmsh
 // meshes the program cannot use, damaged checkpoints, meshes too large for
-// the machine, data outside physical ranges, incompatible options, a locked
-// output directory. Every case runs the dyncontact executable with the
+// the machine, data outside physical ranges, static problems that nothing
+// holds (singular: the message names the free body), incompatible options, a
+// locked output directory. Every case runs the dyncontact executable with the
 // output directory of an earlier, successful run and must
 //  - exit with a non-zero status,
 //  - print "dyncontact: error:" with a message that names the parameter or
@@ -291,10 +292,11 @@ main(int argc, char **argv)
                                   "0\n"),
          "Initial velocity of body 2: each component must lie in [-1e+09"},
     {"gmsh",
-         "contact tag on a clamped face",
+         "contact tags on clamped faces",
          gmsh("two_blocks.msh") +
-           testing::scene_entries("Gmsh", "    set Dirichlet tags = 10, 11\n"),
-         "tag 11 is in both Dirichlet tags and Contact tags of body 1"},
+           testing::scene_entries("Gmsh",
+                                  "    set Dirichlet tags = 10, 11, 12\n"),
+         "lie on a Dirichlet boundary: they get no contact rows"},
     // damaged checkpoints
     {"checkpoint",
          "truncated data file",
@@ -469,6 +471,21 @@ main(int argc, char **argv)
          "subsection Output\n  set Output interval = nan\nend\n",
          "Output/Output interval = 'nan' is refused; the values allowed are "
              "[Double 0..."},
+    // static problems that nothing holds (singular)
+    {"static",
+         "hertz with Load 0 and a gap",
+         scene_prm("hertz", "    set Load = 0\n    set Initial gap = 0.01\n") +
+           "subsection Time integration\n  set Scheme = static\nend\n",
+         "nothing holds body 1 (1 rigid motion)"},
+    {"static",
+         "a bar with a gap and no load",
+         bar("") + "subsection Time integration\n  set Scheme = static\nend\n",
+         "nothing holds body 1 (3 rigid motions)"},
+    {"static",
+         "a Gmsh body without Dirichlet tags",
+         gmsh("two_blocks.msh") +
+           "subsection Time integration\n  set Scheme = static\nend\n",
+         "nothing holds body 2 (3 rigid motions)"},
     // incompatible options
     {"incompatible",
          "reference states every 0.03 s with Time step 0.0125 s",

@@ -81,10 +81,7 @@ namespace dyncontact
         }
     additions.compress(VectorOperation::add);
     z += additions;
-    for (const auto &line : homogeneous.get_lines())
-      if (locally_owned.is_element(line.index))
-        z(line.index) = 0.;
-    z.compress(VectorOperation::insert);
+    zero_constrained(homogeneous, z);
   }
 
 

@@ -204,6 +204,26 @@ namespace dyncontact
 
 
 
+  namespace
+  {
+    /// Whether Dirichlet data (a constraint without entries) fix every
+    /// component of @p row's node that its normal has.
+    bool
+    fixed_by_dirichlet_data(const ContactRow                &row,
+                            const AffineConstraints<double> &constraints)
+    {
+      for (unsigned int d = 0; d < row.normal.size(); ++d)
+        if (std::abs(row.normal[d]) > 1e-12 &&
+            !(constraints.is_constrained(row.entries[d].first) &&
+              constraints.get_constraint_entries(row.entries[d].first)
+                ->empty()))
+          return false;
+      return true;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   ContactSetup<dim>::add_row(ContactRow                      &row,
@@ -346,6 +366,8 @@ namespace dyncontact
     const ContactMapping<dim> phi(
       faces_near(sides[1 - slave], slave_points, pair.search_radius, comm),
       pair.search_radius);
+    // slave nodes that Dirichlet data fix in every direction of their row
+    unsigned int n_clamped = 0;
     for (const BoundaryNode &node : nodes)
       {
         const Point<dim> &x     = node.x;
@@ -374,13 +396,29 @@ namespace dyncontact
             projection.normal = -image->master_normal;
             projection.gap    = -image->gap;
           }
-        ContactRow row = make_two_body_row<dim>(x,
+        ContactRow        row    = make_two_body_row<dim>(x,
                                                 node.dofs,
                                                 projection,
                                                 phi.faces()[image->face],
                                                 system.get_fe().degree);
+        const std::size_t n_rows = rows.size();
         add_row(row, node.scalar_dof, w_ghosted, system.get_constraints());
+        if (rows.size() == n_rows &&
+            fixed_by_dirichlet_data(row, system.get_constraints()))
+          ++n_clamped;
       }
+    n_clamped = Utilities::MPI::sum(n_clamped, comm);
+    AssertThrow(n_clamped == 0,
+                ExcMessage("Contact pair " + std::to_string(pair_index + 1) +
+                           ": " + std::to_string(n_clamped) +
+                           " slave nodes (side " + std::to_string(slave + 1) +
+                           ") lie on a Dirichlet boundary: they get no "
+                           "contact rows, and the master body would pass "
+                           "through them. Make the clamped side the master "
+                           "(Contact/Slave side = " +
+                           std::to_string(2 - slave) +
+                           "), or take the contact boundary out of the "
+                           "Dirichlet boundaries."));
     pcout << "   contact pair: slave is side " << slave + 1 << " ("
           << n_faces[slave] << " faces), master side " << 2 - slave << " ("
           << n_faces[1 - slave] << " faces)" << std::endl;

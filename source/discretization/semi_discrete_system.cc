@@ -8,6 +8,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <dyncontact/discretization/rigid_motions.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 
 #include <Epetra_CrsGraph.h>
@@ -563,21 +564,9 @@ namespace dyncontact
             if (locally_owned.is_element(dofs[i]))
               {
                 const unsigned int c = fe.system_to_component_index(i).first;
-                const Point<dim>  &x = values.quadrature_point(i);
-                auto               coordinate = [&](const unsigned int j) {
-                  return j < dim ? x[j] : 0.;
-                };
-                // e_axis x x = x_a e_b - x_b e_a, (axis, a, b) cyclic; the
-                // axis is z in 2D, and x, y, z in 3D
                 for (unsigned int k = 0; k < modes.size(); ++k)
-                  {
-                    const unsigned int axis = (dim == 2) ? 2 : k;
-                    const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
-                    const double       value = (c == b) ? coordinate(a) :
-                                               (c == a) ? -coordinate(b) :
-                                                          0.;
-                    modes[k](dofs[i])        = value;
-                  }
+                  modes[k](dofs[i]) =
+                    rotation_component<dim>(k, c, values.quadrature_point(i));
               }
         }
     for (auto &mode : modes)

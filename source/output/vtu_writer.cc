@@ -536,19 +536,24 @@ namespace dyncontact
       {
         std::vector<fs::path> later;
         std::error_code       error;
-        for (const auto &entry : fs::directory_iterator(directory, error))
+        for (fs::directory_iterator entry(directory, error), end;
+             !error && entry != end;
+             entry.increment(error))
           {
-            const std::string name = entry.path().filename().string();
+            const std::string name = entry->path().filename().string();
             const long long   n    = solution_file_number(name);
             if ((n >= 0 &&
                  static_cast<unsigned long long>(n) >= output_counter) ||
                 (name == "solution.pvd" && !write_vtu))
-              later.push_back(entry.path());
+              later.push_back(entry->path());
           }
+        if (error)
+          failure = "Cannot list the output directory '" + directory +
+                    "': " + error.message() + ".";
         for (const fs::path &file : later)
-          if (fs::remove(file, error) && !error)
+          if (fs::remove(file, error))
             ++n_removed;
-          else if (failure.empty())
+          else if (error && failure.empty())
             failure = "Cannot remove '" + file.string() +
                       "', a file of an earlier run: " + error.message() + ".";
       }

@@ -98,7 +98,8 @@ namespace dyncontact
                       "0",
                       Patterns::Double(-1., 1.),
                       "A uniform initial axial strain eps0 (u0 = "
-                      "eps0 x e_x, dimensionless, > -1); nonzero values make "
+                      "eps0 x e_x, dimensionless, in (-1, 1]); nonzero values "
+                      "make "
                       "the bar vibrate. The exact solution then follows from "
                       "d'Alembert's solution along the characteristics, but "
                       "the program does not compute it: no error norm is "

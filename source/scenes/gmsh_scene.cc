@@ -331,16 +331,6 @@ namespace dyncontact
                 ExcMessage("Scene/Gmsh: contact needs two bodies, and "
                            "contact tags on both (Contact tags of body 1 and "
                            "2)."));
-    for (unsigned int b = 0; b < 2; ++b)
-      for (const auto tag : contact_tags[b])
-        AssertThrow(dirichlet_tags.count(tag) == 0,
-                    ExcMessage("Scene/Gmsh: tag " + std::to_string(tag) +
-                               " is in both Dirichlet tags and Contact tags "
-                               "of body " +
-                               std::to_string(b + 1) +
-                               ": a clamped face gets no contact rows, and "
-                               "the bodies would pass through each other "
-                               "there. Take it out of one of them."));
   }
 
 

@@ -47,8 +47,8 @@ namespace dyncontact
     prm.declare_entry("Viscous Lame parameter",
                       "0",
                       Patterns::Double(-1e18, 1e18),
-                      "Kelvin-Voigt viscous Lame parameter lambda_v, in Pa s "
-                      "(>= 0).");
+                      "Kelvin-Voigt viscous Lame parameter lambda_v, in Pa s, "
+                      "-1e18 to 1e18 with lambda_v + 2/3 mu_v >= 0.");
     prm.leave_subsection();
   }
 

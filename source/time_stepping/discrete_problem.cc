@@ -3,6 +3,7 @@
 #include <dyncontact/base/memory_check.h>
 #include <dyncontact/base/vector_copy.h>
 #include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/discretization/rigid_motions.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/discrete_problem.h>
@@ -75,9 +76,38 @@ namespace dyncontact
     {
       TimerOutput::Scope t(timer, "assembly");
       system->assemble(scene);
+      if (scheme.is_static)
+        check_rigid_motions(scene);
     }
     TimerOutput::Scope t(timer, "contact rows");
     contact->setup(scene, *system, mapping, pcout);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::check_rigid_motions(const Scene<dim> &scene) const
+  {
+    const std::vector<unsigned int> unheld =
+      unheld_rigid_motions(*system, scene.n_bodies());
+    std::string bodies;
+    for (unsigned int b = 0; b < unheld.size(); ++b)
+      if (unheld[b] > 0)
+        bodies += (bodies.empty() ? "body " : ", body ") +
+                  std::to_string(b + 1) + " (" + std::to_string(unheld[b]) +
+                  (unheld[b] == 1 ? " rigid motion)" : " rigid motions)");
+    AssertThrow(bodies.empty(),
+                ExcMessage(
+                  "The static problem is singular: nothing holds " + bodies +
+                  ": no Dirichlet boundary fixes these rigid motions "
+                  "(translations, rotations), and no load acts along them "
+                  "(a single one along which the load acts is left to the "
+                  "contact), so the position is not determined. Clamp part "
+                  "of the boundary (a Dirichlet boundary of the scene, e.g. "
+                  "Scene/Gmsh/Dirichlet tags), give the body a load towards "
+                  "the obstacle (e.g. Scene/Hertz/Load > 0), or use a "
+                  "dynamic scheme."));
   }
 
 

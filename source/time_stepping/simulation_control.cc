@@ -20,7 +20,9 @@ namespace dyncontact
                       "2.5",
                       Patterns::Double(0.),
                       "Final time T, in s (>= 0). If T is not a multiple of "
-                      "tau, the last step ends after T.");
+                      "tau, the last step ends after T. Not used by the "
+                      "static scheme (no time: its solution is at t = 1, the "
+                      "load factor).");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -73,6 +75,10 @@ namespace dyncontact
                 ExcMessage("Time integration/End time must be a finite "
                            "number >= 0 (s); got " +
                            format_number(end_time) + "."));
+    if (static_problem)
+      // no time: its one state is that of load factor 1 (the unloaded
+      // initial state is at 0)
+      end_time = 1.;
 
     prm.enter_subsection("Output");
     output_interval = prm.get_double("Output interval");

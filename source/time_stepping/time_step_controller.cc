@@ -152,8 +152,10 @@ namespace dyncontact
   TimeStepController::stop_at_multiples_of(const double       interval,
                                            const std::string &entry)
   {
-    if (is_static)
-      return;
+    AssertThrow(!is_static,
+                ExcMessage(entry + ": the static problem has one state and "
+                                   "no time; reference states need a "
+                                   "dynamic scheme."));
     const double k = interval / time_step;
     AssertThrow(adaptive || (std::round(k) >= 1. &&
                              std::abs(k - std::round(k)) <= 1e-9 * k),
@@ -183,16 +185,16 @@ namespace dyncontact
   double
   TimeStepController::trial_timestep()
   {
-    if (adaptive)
+    if (adaptive && step_start + tau > end_time)
+      shorten(end_time - step_start);
+    if (adaptive && stop_interval > 0.)
       {
-        double stop = end_time;
-        if (stop_interval > 0.)
-          // the next multiple of the interval after the step's start (a
-          // start within 1e-6 intervals of a multiple is at it)
-          stop = std::min(stop,
-                          (std::floor(step_start / stop_interval + 1e-6) + 1.) *
-                            stop_interval);
-        if (step_start + tau > stop)
+        // the next multiple of the interval after the step's start (a start
+        // within 1e-6 intervals of a multiple is at it); a step that ends
+        // there up to round-off is not shortened
+        const double stop =
+          (std::floor(step_start / stop_interval + 1e-6) + 1.) * stop_interval;
+        if (step_start + tau > stop + 1e-9 * tau)
           shorten(stop - step_start);
       }
     return tau;

@@ -67,11 +67,7 @@ namespace dyncontact
     void
     project_initial_penetration();
 
-    /// One step from (u, udot) = (u_old, udot_old) at time @p time (step
-    /// @p step): trial steps with the TimeStepController's tau until it
-    /// accepts one (it retries after a failed solve, a located contact
-    /// event, an error estimate above the tolerance). A failed trial that
-    /// cannot be retried leaves the state as it was and reports failed.
+    /// What take_step() did.
     struct Outcome
     {
       TimeStepController::AcceptedStep step;
@@ -79,6 +75,11 @@ namespace dyncontact
       /// of a failed trial: whether its solution was finite
       bool finite = true;
     };
+    /// One step from (u, udot) = (u_old, udot_old) at time @p time (step
+    /// @p step): trial steps with the TimeStepController's tau until it
+    /// accepts one (it retries after a failed solve, a located contact
+    /// event, an error estimate above the tolerance). A failed trial that
+    /// cannot be retried leaves the state as it was and reports failed.
     Outcome
     take_step(const double time, const unsigned int step, TimerOutput &timer);
 
@@ -133,17 +134,18 @@ namespace dyncontact
     {
       return *integrator;
     }
-    const ActiveSetSolver::Parameters &
-    get_solver_parameters() const
-    {
-      return solver_parameters;
-    }
 
     VectorType u, udot, u_old, udot_old;
     /// the last trial step's, and the initial velocity's (eq. 12c)
     StepReport report, initial_report;
 
   private:
+    /// The static scheme: stops with a message naming each body that
+    /// neither a Dirichlet boundary nor its load holds
+    /// (unheld_rigid_motions()).
+    void
+    check_rigid_motions(const Scene<dim> &scene) const;
+
     /// Warns once if S = M + tau^2/4 A + tau/2 B keeps the mass only to a
     /// poor relative accuracy.
     void

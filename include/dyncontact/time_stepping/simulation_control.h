@@ -46,7 +46,8 @@ namespace dyncontact
    * step tau is the TimeStepController's: advance() is handed the accepted
    * step's, and the comparisons of times with End time and output times allow
    * round-off of 1e-9 of the controller's present tau. The static problem
-   * is one step to the end time.
+   * is one step, to t = 1 (no time: the load factor; the unloaded initial
+   * state is at 0).
    */
   class SimulationControl
   {
@@ -60,7 +61,7 @@ namespace dyncontact
     SimulationControl(const MPI_Comm            comm,
                       const TimeStepController &time_step_controller);
 
-    /// Reads and checks the parameters; @p is_static: one step, to End time.
+    /// Reads and checks the parameters; @p is_static: one step, to t = 1.
     void
     parse_parameters(ParameterHandler &prm, const bool is_static);
 
