@@ -220,6 +220,30 @@ namespace dyncontact
           return false;
       return true;
     }
+
+
+
+    /// Stops if any rank found slave nodes of pair @p pair_index (slave
+    /// side @p slave) that Dirichlet data fix (they get no rows).
+    void
+    refuse_clamped_slave_nodes(unsigned int       n_clamped,
+                               const unsigned int pair_index,
+                               const unsigned int slave,
+                               const MPI_Comm     comm)
+    {
+      n_clamped = Utilities::MPI::sum(n_clamped, comm);
+      AssertThrow(n_clamped == 0,
+                  ExcMessage("Contact pair " + std::to_string(pair_index + 1) +
+                             ": " + std::to_string(n_clamped) +
+                             " slave nodes (side " + std::to_string(slave + 1) +
+                             ") lie on a Dirichlet boundary: they get no "
+                             "contact rows, and the master body would pass "
+                             "through them. Make the clamped side the master "
+                             "(Contact/Slave side = " +
+                             std::to_string(2 - slave) +
+                             "), or take the contact boundary out of the "
+                             "Dirichlet boundaries."));
+    }
   } // namespace
 
 
@@ -407,18 +431,7 @@ namespace dyncontact
             fixed_by_dirichlet_data(row, system.get_constraints()))
           ++n_clamped;
       }
-    n_clamped = Utilities::MPI::sum(n_clamped, comm);
-    AssertThrow(n_clamped == 0,
-                ExcMessage("Contact pair " + std::to_string(pair_index + 1) +
-                           ": " + std::to_string(n_clamped) +
-                           " slave nodes (side " + std::to_string(slave + 1) +
-                           ") lie on a Dirichlet boundary: they get no "
-                           "contact rows, and the master body would pass "
-                           "through them. Make the clamped side the master "
-                           "(Contact/Slave side = " +
-                           std::to_string(2 - slave) +
-                           "), or take the contact boundary out of the "
-                           "Dirichlet boundaries."));
+    refuse_clamped_slave_nodes(n_clamped, pair_index, slave, comm);
     pcout << "   contact pair: slave is side " << slave + 1 << " ("
           << n_faces[slave] << " faces), master side " << 2 - slave << " ("
           << n_faces[1 - slave] << " faces)" << std::endl;
