@@ -105,10 +105,7 @@ main(int argc, char **argv)
       const std::string file = name + ".prm";
       std::ofstream(file) << valid << text;
       const Outcome outcome = run_program(file);
-      const bool    clean =
-        outcome.text.find("dyncontact: error:") != std::string::npos &&
-        outcome.text.find("Stacktrace") == std::string::npos &&
-        outcome.text.find("An error occurred in") == std::string::npos;
+      const bool clean = error_names(outcome, "") && without_backtrace(outcome);
       log() << name << ": exit status non-zero: " << check(outcome.status != 0)
             << ", clean message: " << check(clean) << "\n"
             << outcome.text.substr(outcome.text.find("dyncontact: error:"))

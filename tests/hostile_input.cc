@@ -294,8 +294,7 @@ main(int argc, char **argv)
     {"gmsh",
          "contact tags on clamped faces",
          gmsh("two_blocks.msh") +
-           testing::scene_entries("Gmsh",
-                                  "    set Dirichlet tags = 10, 11, 12\n"),
+           testing::scene_entries("Gmsh", "    set Dirichlet tags = 10, 11, 12\n"),
          "lie on a Dirichlet boundary: they get no contact rows"},
     // damaged checkpoints
     {"checkpoint",
@@ -587,12 +586,9 @@ main(int argc, char **argv)
 
       std::ofstream("case.prm") << base << c.prm;
       const Outcome outcome = run_program("case.prm");
-      const auto    at      = outcome.text.find("dyncontact: error:");
-      const bool    named   = at != std::string::npos &&
-                         outcome.text.find(c.expected, at) != std::string::npos;
-      const bool clean =
-        outcome.text.find("Stacktrace") == std::string::npos &&
-        outcome.text.find("An error occurred in") == std::string::npos &&
+      const bool    named   = error_names(outcome, c.expected);
+      const bool    clean =
+        without_backtrace(outcome) &&
         outcome.text.find("Segmentation") == std::string::npos &&
         outcome.text.find("TimerOutput objects finalize") == std::string::npos;
       const bool kept =

@@ -270,6 +270,25 @@ namespace testing
     std::string text;
   };
 
+  /// Whether @p outcome printed "dyncontact: error:" and, after it,
+  /// @p fragment (an empty one: only the error line).
+  inline bool
+  error_names(const Outcome &outcome, const std::string &fragment)
+  {
+    const auto at = outcome.text.find("dyncontact: error:");
+    return at != std::string::npos &&
+           outcome.text.find(fragment, at) != std::string::npos;
+  }
+
+  /// Whether @p outcome printed no backtrace (neither deal.II's "An error
+  /// occurred in" nor a stack trace).
+  inline bool
+  without_backtrace(const Outcome &outcome)
+  {
+    return outcome.text.find("Stacktrace") == std::string::npos &&
+           outcome.text.find("An error occurred in") == std::string::npos;
+  }
+
   /// Runs the dyncontact executable with @p arguments; exit status and all
   /// it printed.
   inline Outcome

@@ -56,12 +56,8 @@ main(int argc, char **argv)
         }
       std::ofstream("case.prm") << prm << c.extra;
       const Outcome outcome = run_program("case.prm");
-      const auto    at      = outcome.text.find("dyncontact: error:");
-      const bool    named   = at != std::string::npos &&
-                         outcome.text.find(c.file, at) != std::string::npos;
-      const bool clean =
-        outcome.text.find("Stacktrace") == std::string::npos &&
-        outcome.text.find("An error occurred in") == std::string::npos;
+      const bool    named   = error_names(outcome, c.file);
+      const bool    clean   = without_backtrace(outcome);
       log() << c.name
             << ": exit status non-zero: " << check(outcome.status != 0)
             << ", message names '" << c.file << "': " << check(named)

@@ -12,8 +12,6 @@ namespace dealii
 
 namespace dyncontact
 {
-  class TimeStepController;
-
   /**
    * Reference states (subsection "Reference solution"): a reference run
    * (same mesh, much smaller time step) writes u and udot at fixed times;
