@@ -27,7 +27,8 @@ def run(name, text):
     with open(prm, "w") as f:
         f.write(text + "\nset Output directory = results-adaptivity/%s\n" % name)
         f.write("subsection Output\n  set Write vtu = false\nend\n")
-        f.write("subsection Postprocess\n  set Error norm interval = every step\nend\n")
+        f.write("subsection Postprocess\n  subsection Error energy norm\n"
+                "    set Interval = every step\n  end\nend\n")
     start = time.time()
     subprocess.run([executable, prm], check=True, stdout=subprocess.DEVNULL)
     wall = time.time() - start

@@ -74,7 +74,7 @@ def overrides(entries):
 def run(name, entries, directory):
     text = base + "\n" + overrides(args.set + entries + [
         "Output directory=" + directory, "Output/Write vtu=false",
-        "Postprocess/Error norm interval=every step"])
+        "Postprocess/Error energy norm/Interval=every step"])
     prm = directory + ".prm"
     with open(prm, "w") as f:
         f.write(text)

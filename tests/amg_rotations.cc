@@ -27,8 +27,10 @@ main(int argc, char **argv)
                            0.5,
                            "set Output directory = output-" + modes +
                              "\n"
-                                           "subsection Postprocess\n  set Error norm interval"
-                                           " = output times\nend\n"
+                                           "subsection Postprocess\n"
+                                           "  subsection Error energy norm\n"
+                                           "    set Interval = output times\n"
+                                           "  end\nend\n"
                                            "subsection Contact solver\n"
                                            "  set Preconditioner = AMG\n"
                                            "  set AMG near null space = " +

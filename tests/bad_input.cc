@@ -86,6 +86,10 @@ main(int argc, char **argv)
     {"old_flat_scene_entry", "subsection Scene\n  set Length = 2\nend\n"},
     {"old_flat_slave_side",
      "subsection Scene\n  set Name = two bars\n  set Slave side = 2\nend\n"},
+    {"moved_error_norm_interval",
+     "subsection Postprocess\n  set Error norm interval = every step\nend\n"},
+    {"moved_initial_penetration",
+     "subsection Contact solver\n  set Initial penetration = project\nend\n"},
     {"entry_of_another_scene",
      "subsection Scene\n  subsection Bar impact\n    set Radius = 2\n"
      "  end\nend\n"},

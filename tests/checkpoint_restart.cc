@@ -31,7 +31,8 @@ main(int argc, char **argv)
   };
   const std::string sampled = "subsection Output\n  set Output interval = 0.1\n"
                               "end\nsubsection Postprocess\n"
-                              "  set Error norm interval = output times\nend\n";
+                              "  subsection Error energy norm\n"
+                              "    set Interval = output times\n  end\nend\n";
   for (const Case &c :
        {Case{"bar impact", "bar", "", 1.25, 50},
         Case{"adaptive two bars", "two-bars", adaptive, 1.25, 50},

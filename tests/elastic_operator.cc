@@ -48,7 +48,7 @@ check(const unsigned int degree)
     "  set Poisson's ratio = 0.1\n  set Viscous shear modulus = 0.05\nend\n");
   const auto scene = create_scene<dim>(prm, ".");
   typename SemiDiscreteSystem<dim>::Parameters parameters;
-  parameters.parse_parameters(prm);
+  parameters.degree = degree;
 
   parallel::distributed::Triangulation<dim> triangulation(comm);
   scene->create_coarse_mesh(triangulation);

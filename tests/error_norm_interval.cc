@@ -47,8 +47,9 @@ main(int argc, char **argv)
                          (vtu ? "true" : "false") +
                          "\nend\n"
                                  "subsection Postprocess\n"
-                                 "  set Error norm interval = " +
-                         interval + "\nend\n"));
+                                 "  subsection Error energy norm\n"
+                                 "    set Interval = " +
+                         interval + "\n  end\nend\n"));
   };
   const auto every = solve("every step", false).column("error_energy_norm");
   log() << "every step: " << every.size() << " rows, the norm in all: "
@@ -90,7 +91,8 @@ main(int argc, char **argv)
             tau,
             0.5,
             "subsection Postprocess\n"
-            "  set Error norm interval = every step\nend\n" +
+            "  subsection Error energy norm\n"
+            "    set Interval = every step\n  end\nend\n" +
               // held at its far end (a free bar is refused as singular)
               scene_entries("Bar impact", "    set Fixed far end = true\n")));
   log() << "static solve: no error_energy_norm column: "

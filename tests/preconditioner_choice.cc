@@ -115,8 +115,9 @@ main(int argc, char **argv)
                                          tau,
                                          0.4,
                                          "subsection Postprocess\n"
-                                           "  set Error norm interval = "
-                                           "output times\nend\n"));
+                                           "  subsection Error energy norm\n"
+                                           "    set Interval = output times\n"
+                                           "  end\nend\n"));
         const auto       cg  = s.column("linear_iterations"),
                    active    = s.column("active_nodes");
         double most          = 0.;

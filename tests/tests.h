@@ -89,8 +89,8 @@ namespace testing
       << "\n  set Time step = " << tau << "\n  set End time = " << end_time
       << "\n  set Mass matrix = lumped\nend\n"
       << "subsection Output\n  set Write vtu = false\nend\n"
-      << "subsection Postprocess\n  set Error norm interval = every step\n"
-      << "end\n"
+      << "subsection Postprocess\n  subsection Error energy norm\n"
+      << "    set Interval = every step\n  end\nend\n"
       << extra;
     return s.str();
   }

@@ -35,13 +35,23 @@ check(const std::string &what, const bool ok)
 /// The parameters with @p time_integration as the body of subsection Time
 /// integration.
 void
-parse(ParameterHandler &prm, const std::string &time_integration)
+parse(TimeIntegrationParameters &parameters,
+      const std::string         &time_integration)
 {
-  prm.clear();
-  SimulationControl::declare_parameters(prm);
-  TimeStepController::declare_parameters(prm);
+  ParameterHandler prm;
+  TimeIntegrationParameters::declare_parameters(prm);
   prm.parse_input_from_string("subsection Time integration\n" +
                               time_integration + "\nend\n");
+  parameters.parse_parameters(prm);
+}
+
+/// SimulationControl's parameters: End time from @p parameters.
+SimulationControl::Parameters
+control_parameters(const TimeIntegrationParameters &parameters)
+{
+  SimulationControl::Parameters p;
+  p.end_time = parameters.end_time;
+  return p;
 }
 
 int
@@ -49,18 +59,18 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   out << std::setprecision(6);
-  ParameterHandler prm;
+  TimeIntegrationParameters parameters;
 
   {
     out << "adaptive, tau = 0.3, End time = 1, levels [0.075, 0.6]\n";
-    parse(prm,
+    parse(parameters,
           "set Time step = 0.3\nset End time = 1\nset Time step control = "
           "adaptive\nset Minimum time step = 0.075\nset Maximum time step = "
           "0.6");
     TimeStepController tau;
     SimulationControl  control(MPI_COMM_WORLD, tau);
-    control.parse_parameters(prm, false);
-    tau.parse_parameters(prm, false, control.get_end_time());
+    control.parse_parameters(control_parameters(parameters), false);
+    tau.parse_parameters(parameters, false, control.get_end_time());
     tau.reset(0);
     // three level steps: 0.3, 0.6, 0.9
     for (unsigned int k = 0; k < 3; ++k)
@@ -103,7 +113,7 @@ main(int argc, char **argv)
     VectorType                         flags;
     const auto         vectors = tau.save(state, rows, flags, flags);
     TimeStepController resumed;
-    resumed.parse_parameters(prm, false, 1.);
+    resumed.parse_parameters(parameters, false, 1.);
     resumed.load(state, rows, flags, vectors);
     check("a checkpoint restores tau", resumed.get_timestep() == 0.075);
     resumed.begin_step(0.5);
@@ -114,32 +124,32 @@ main(int argc, char **argv)
 
   {
     out << "fixed tau = 1/3 with Time step adaptation, End time = 1\n";
-    parse(prm,
+    parse(parameters,
           "set Time step = 0.333333333333333\nset End time = 1\nset Time "
           "step adaptation = true");
     TimeStepController tau;
     SimulationControl  control(MPI_COMM_WORLD, tau);
-    control.parse_parameters(prm, false);
-    tau.parse_parameters(prm, false, control.get_end_time());
+    control.parse_parameters(control_parameters(parameters), false);
+    tau.parse_parameters(parameters, false, control.get_end_time());
     unsigned int n_halvings = 0;
     bool         clipped    = false;
     while (tau.retry_after_failure())
       ++n_halvings;
     check("a failed step is halved 10 times (down to Time step / 1024)",
           n_halvings == 10);
-    parse(prm, "set Time step = 0.25\nset End time = 1");
+    parse(parameters, "set Time step = 0.25\nset End time = 1");
     TimeStepController fixed;
-    fixed.parse_parameters(prm, false, 1.);
+    fixed.parse_parameters(parameters, false, 1.);
     check("without Time step adaptation a failed step is not retried",
           !fixed.retry_after_failure());
     TimeStepController static_problem;
-    static_problem.parse_parameters(prm, true, 1.);
+    static_problem.parse_parameters(parameters, true, 1.);
     check("nor in the static problem",
           !static_problem.retry_after_failure() &&
             !static_problem.is_adaptive());
     // fixed steps: the time is k tau, the last step passes End time
     SimulationControl fixed_control(MPI_COMM_WORLD, fixed);
-    fixed_control.parse_parameters(prm, false);
+    fixed_control.parse_parameters(control_parameters(parameters), false);
     while (fixed_control.keep_going())
       {
         fixed.begin_step(fixed_control.get_time());
@@ -162,12 +172,12 @@ main(int argc, char **argv)
           std::string("set Time step control = adaptive\nset Time step "
                       "tolerance = 0")})
       {
-        parse(prm, entry);
+        parse(parameters, entry);
         std::string message;
         try
           {
             TimeStepController tau;
-            tau.parse_parameters(prm, false, 1.);
+            tau.parse_parameters(parameters, false, 1.);
           }
         catch (const std::exception &e)
           {

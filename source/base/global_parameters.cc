@@ -18,6 +18,11 @@ namespace dyncontact
                       Patterns::Anything(),
                       "Folder for the VTU/PVTU/PVD files and statistics.tsv; "
                       "created if missing, relative to the working directory.");
+    prm.declare_entry(
+      "Polynomial degree",
+      "1",
+      Patterns::Integer(1, 4),
+      "Degree p of the displacement space FE_Q(p)^dim, 1 to 4.");
     prm.enter_subsection("Mesh");
     prm.declare_entry("Initial global refinements",
                       "0",
@@ -34,6 +39,7 @@ namespace dyncontact
   {
     dimension        = prm.get_integer("Dimension");
     output_directory = prm.get("Output directory");
+    degree           = prm.get_integer("Polynomial degree");
     AssertThrow(!output_directory.empty(),
                 ExcMessage("Output directory must not be empty."));
     prm.enter_subsection("Mesh");

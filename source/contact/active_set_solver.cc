@@ -111,15 +111,6 @@ namespace dyncontact
                       "2000",
                       Patterns::Integer(1),
                       "Largest number of CG iterations per linear system.");
-    // (read by ContactSetup, which builds the rows that it concerns)
-    prm.declare_entry("Initial penetration",
-                      "reject",
-                      Patterns::Selection("reject|project"),
-                      "What to do with an initial configuration that "
-                      "penetrates (a slave node inside the obstacle or the "
-                      "master body): reject it with a message, or project "
-                      "the initial displacement onto K_h (the M-projection) "
-                      "with a warning that says by how much.");
     prm.declare_entry(
       "AMG near null space",
       "translations",

@@ -30,6 +30,14 @@ namespace dyncontact
                       "the master surface (in the reference configuration) "
                       "get no constraint row, in m; 0 = the scene's default "
                       "(the gmsh scene has none).");
+    prm.declare_entry("Initial penetration",
+                      "reject",
+                      Patterns::Selection("reject|project"),
+                      "What to do with an initial configuration that "
+                      "penetrates (a slave node inside the obstacle or the "
+                      "master body): reject it with a message, or project "
+                      "the initial displacement onto K_h (the M-projection) "
+                      "with a warning that says by how much.");
     prm.leave_subsection();
   }
 
@@ -43,8 +51,6 @@ namespace dyncontact
     const std::string slave = prm.get("Slave side");
     slave_side              = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
     search_radius           = prm.get_double("Search radius");
-    prm.leave_subsection();
-    prm.enter_subsection("Contact solver");
     project_initial_penetration = (prm.get("Initial penetration") == "project");
     prm.leave_subsection();
   }
@@ -309,7 +315,7 @@ namespace dyncontact
                                Utilities::to_string(x[1]) + ", ...) lies " +
                                Utilities::to_string(-row.gap) +
                                " m inside it. Correct the scene, or set "
-                               "'Contact solver/Initial penetration = "
+                               "'Contact/Initial penetration = "
                                "project'."));
         add_row(row, node.scalar_dof, w_ghosted, constraints);
       }
@@ -411,8 +417,8 @@ namespace dyncontact
                                Utilities::to_string(x[1]) +
                                ", ...) lies inside the master body by " +
                                Utilities::to_string(image->gap) +
-                               " m. Correct the mesh, or set 'Contact "
-                               "solver/Initial penetration = project'."));
+                               " m. Correct the mesh, or set "
+                               "'Contact/Initial penetration = project'."));
         if (inside)
           {
             // a negative gap along the master's normal: the row asks for

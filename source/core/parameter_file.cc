@@ -4,23 +4,20 @@
 #include <dyncontact/base/global_parameters.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/core/parameter_file.h>
-#include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/output/checkpoint.h>
-#include <dyncontact/output/progress.h>
+#include <dyncontact/output/output_parameters.h>
 #include <dyncontact/output/reference_states.h>
-#include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
-#include <dyncontact/time_stepping/integrators.h>
-#include <dyncontact/time_stepping/simulation_control.h>
-#include <dyncontact/time_stepping/time_step_controller.h>
+#include <dyncontact/time_stepping/time_integration_parameters.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace dyncontact
@@ -121,28 +118,38 @@ namespace dyncontact
 
 
 
+  const std::vector<ParameterOwner> &
+  parameter_owners()
+  {
+    // the declarations do not depend on the dimension
+    constexpr int                            dim    = 2;
+    static const std::vector<ParameterOwner> owners = {
+      {"GlobalParameters", &GlobalParameters::declare_parameters},
+      {"TimeIntegrationParameters",
+       &TimeIntegrationParameters::declare_parameters},
+      {"Material",
+       [](ParameterHandler &prm) {
+         Material::declare_parameters(prm, "Material");
+         Material::declare_parameters(prm, "Material of body 2");
+       }},
+      {"ActiveSetSolver", &ActiveSetSolver::Parameters::declare_parameters},
+      {"ContactSetup", &ContactSetup<dim>::Parameters::declare_parameters},
+      {"MeshAdaptor", &MeshAdaptor<dim>::declare_parameters},
+      {"OutputParameters", &OutputParameters::declare_parameters},
+      {"Checkpoints", &Checkpoints::declare_parameters},
+      {"ReferenceStates", &ReferenceStates<dim>::declare_parameters},
+      {"Postprocess::Manager", &Postprocess::Manager<dim>::declare_parameters},
+      {"Scene", &declare_scene_parameters}};
+    return owners;
+  }
+
+
+
   void
   declare_all_parameters(ParameterHandler &prm)
   {
-    // each component declares its own; the declarations do not depend on
-    // the dimension
-    constexpr int dim = 2;
-    GlobalParameters::declare_parameters(prm);
-    SemiDiscreteSystem<dim>::Parameters::declare_parameters(prm);
-    SimulationControl::declare_parameters(prm);
-    TimeStepController::declare_parameters(prm);
-    TimeIntegrator::declare_parameters(prm);
-    Material::declare_parameters(prm, "Material");
-    Material::declare_parameters(prm, "Material of body 2");
-    ActiveSetSolver::Parameters::declare_parameters(prm);
-    ContactSetup<dim>::Parameters::declare_parameters(prm);
-    MeshAdaptor<dim>::declare_parameters(prm);
-    VtuWriter<dim>::declare_parameters(prm);
-    Progress::Parameters::declare_parameters(prm);
-    Checkpoints::declare_parameters(prm);
-    ReferenceStates<dim>::declare_parameters(prm);
-    Postprocess::Manager<dim>::declare_parameters(prm);
-    declare_scene_parameters(prm);
+    for (const ParameterOwner &owner : parameter_owners())
+      owner.declare_parameters(prm);
   }
 
 
@@ -175,6 +182,23 @@ namespace dyncontact
             }
         }
       return names;
+    }
+
+
+
+    /// The entries that moved (full names before and now): each
+    /// subsection has one owner, and a plugin's entries are in
+    /// <Component>/<Plugin>.
+    const std::vector<std::pair<std::string, std::string>> &
+    moved_entries()
+    {
+      static const std::vector<std::pair<std::string, std::string>> moved = {
+        {"Contact solver/Initial penetration", "Contact/Initial penetration"},
+        {"Mesh refinement/Contact zone distance",
+         "Mesh refinement/Contact zone/Distance"},
+        {"Postprocess/Error norm interval",
+         "Postprocess/Error energy norm/Interval"}};
+      return moved;
     }
 
 
@@ -267,6 +291,11 @@ namespace dyncontact
                               at);
                 continue;
               }
+            // an entry of an earlier layout
+            for (const auto &[before, now] : moved_entries())
+              AssertThrow(where + entry != before,
+                          ExcMessage(at + "'" + before + "' has moved to '" +
+                                     now + "' (see doc/running.md)."));
             // the subsections that do declare an entry of this name
             const std::string name = (path.size() == 1 && path[0] == "Scene" &&
                                       entry == "Contact search radius") ?

@@ -20,35 +20,60 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// The values of the subsection(s) @p P owns.
+    template <class P>
+    P
+    parsed(ParameterHandler &prm)
+    {
+      P parameters;
+      parameters.parse_parameters(prm);
+      return parameters;
+    }
+  } // namespace
+
+
+
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &input_directory,
                             const MPI_Comm     comm)
-    : comm(comm)
+    : parameters(parsed<GlobalParameters>(prm))
+    , comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , time_integration(parsed<TimeIntegrationParameters>(prm))
     , control(comm, time_step_controller)
-    , scheme(TimeIntegrator::parse_scheme(prm))
+    , scheme(scheme_by_name(time_integration.scheme))
   {
-    parameters.parse_parameters(prm);
     parameters.input_directory = input_directory;
-    control.parse_parameters(prm, scheme.is_static);
-    time_step_controller.parse_parameters(prm,
+    const auto output          = parsed<OutputParameters>(prm);
+    checkpoints.parse_parameters(prm, parameters.output_directory, comm);
+    control.parse_parameters({time_integration.end_time,
+                              output.output_interval,
+                              checkpoints.interval_in_steps(),
+                              checkpoints.interval_in_minutes()},
+                             scheme.is_static);
+    time_step_controller.parse_parameters(time_integration,
                                           scheme.is_static,
                                           control.get_end_time());
     problem = std::make_unique<DiscreteProblem<dim>>(
-      prm, scheme, time_step_controller, pcout, comm);
+      prm,
+      scheme,
+      typename SemiDiscreteSystem<dim>::Parameters{
+        parameters.degree, time_integration.lumped_mass},
+      time_step_controller,
+      pcout,
+      comm);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
     vtu_writer = std::make_unique<VtuWriter<dim>>();
-    vtu_writer->parse_parameters(prm);
+    vtu_writer->parse_parameters(output);
     reference_states = std::make_unique<ReferenceStates<dim>>();
     reference_states->parse_parameters(prm);
-    checkpoints.parse_parameters(prm, parameters.output_directory, comm);
     postprocessors = std::make_unique<Postprocess::Manager<dim>>();
     postprocessors->parse_parameters(prm);
-    Progress::Parameters progress_parameters;
-    progress_parameters.parse_parameters(prm);
-    progress = std::make_unique<Progress>(progress_parameters, pcout);
+    progress = std::make_unique<Progress>(output.progress_interval, pcout);
     scene    = create_scene<dim>(prm, input_directory);
     problem->get_contact().check(*scene);
     if (!scene->input_checksum().empty())

@@ -1,4 +1,3 @@
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/p4est_wrappers.h>
@@ -23,38 +22,6 @@
 
 namespace dyncontact
 {
-
-
-  template <int dim>
-  void
-  SemiDiscreteSystem<dim>::Parameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.declare_entry(
-      "Polynomial degree",
-      "1",
-      Patterns::Integer(1, 4),
-      "Degree p of the displacement space FE_Q(p)^dim, 1 to 4.");
-    prm.enter_subsection("Time integration");
-    prm.declare_entry("Mass matrix",
-                      "lumped",
-                      Patterns::Selection("lumped|consistent"),
-                      "lumped: diagonal, by Gauss-Lobatto (nodal) quadrature; "
-                      "consistent: by Gauss quadrature.");
-    prm.leave_subsection();
-  }
-
-
-
-  template <int dim>
-  void
-  SemiDiscreteSystem<dim>::Parameters::parse_parameters(ParameterHandler &prm)
-  {
-    degree = prm.get_integer("Polynomial degree");
-    prm.enter_subsection("Time integration");
-    lumped_mass = (prm.get("Mass matrix") == "lumped");
-    prm.leave_subsection();
-  }
-
 
 
   template <int dim>

@@ -24,12 +24,14 @@ namespace dyncontact
       declare_parameters(ParameterHandler &prm)
       {
         prm.enter_subsection("Mesh refinement");
-        prm.declare_entry("Contact zone distance",
+        prm.enter_subsection("Contact zone");
+        prm.declare_entry("Distance",
                           "0",
                           Patterns::Double(0.),
                           "A slave node is in the contact zone when its "
                           "current gap is below this distance, in m; 0: two "
                           "cell sizes at the node.");
+        prm.leave_subsection();
         prm.leave_subsection();
       }
 
@@ -37,7 +39,9 @@ namespace dyncontact
       parse_parameters(ParameterHandler &prm) override
       {
         prm.enter_subsection("Mesh refinement");
-        distance = prm.get_double("Contact zone distance");
+        prm.enter_subsection("Contact zone");
+        distance = prm.get_double("Distance");
+        prm.leave_subsection();
         prm.leave_subsection();
       }
 

@@ -24,6 +24,19 @@ namespace dyncontact
                       "directory>/checkpoints. The prm must agree with the "
                       "checkpoint's in everything but End time, subsection "
                       "Output and subsection Checkpointing.");
+    prm.declare_entry("Interval in steps",
+                      "0",
+                      Patterns::Integer(0),
+                      "Write a checkpoint every this many steps (0: not by "
+                      "steps). Checkpoints go to <Output directory>/"
+                      "checkpoints; each is written to a new folder and only "
+                      "then marked as the last good one.");
+    prm.declare_entry("Interval in minutes",
+                      "0",
+                      Patterns::Double(0.),
+                      "Write a checkpoint when this much wall-clock time (in "
+                      "minutes) has passed since the last one (0: not by "
+                      "time).");
     prm.leave_subsection();
   }
 
@@ -37,7 +50,9 @@ namespace dyncontact
     root = output_directory + "/checkpoints";
     comm = communicator;
     prm.enter_subsection("Checkpointing");
-    resume_run = prm.get_bool("Resume");
+    resume_run       = prm.get_bool("Resume");
+    interval_steps   = prm.get_integer("Interval in steps");
+    interval_minutes = prm.get_double("Interval in minutes");
     prm.leave_subsection();
 
     // the critical parameters: the whole input in a canonical form, less

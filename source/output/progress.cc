@@ -1,5 +1,3 @@
-#include <deal.II/base/parameter_handler.h>
-
 #include <dyncontact/output/progress.h>
 
 #include <cmath>
@@ -8,36 +6,8 @@
 
 namespace dyncontact
 {
-  void
-  Progress::Parameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Output");
-    prm.declare_entry("Progress interval",
-                      "10",
-                      Patterns::Double(0.),
-                      "Wall time between two progress lines of a long run, "
-                      "in s (each line: step, t / T, tau, active rows, "
-                      "active-set and CG iterations of the last step, wall "
-                      "time per step, estimated time to the end). A run "
-                      "shorter than this prints none; 0: no progress lines.");
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  Progress::Parameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Output");
-    interval = prm.get_double("Progress interval");
-    prm.leave_subsection();
-  }
-
-
-
-  Progress::Progress(const Parameters         &parameters,
-                     const ConditionalOStream &pcout)
-    : parameters(parameters)
+  Progress::Progress(const double interval, const ConditionalOStream &pcout)
+    : interval(interval)
     , pcout(pcout)
   {}
 
@@ -88,10 +58,10 @@ namespace dyncontact
         steps_at_start = step - 1;
         started        = true;
       }
-    if (parameters.interval <= 0. || !pcout.is_active())
+    if (interval <= 0. || !pcout.is_active())
       return;
     const double wall = clock.wall_time();
-    if (wall - last_line < parameters.interval)
+    if (wall - last_line < interval)
       return;
     last_line             = wall;
     const double per_step = wall / std::max(1u, step - steps_at_start);

@@ -382,47 +382,15 @@ namespace dyncontact
 
   template <int dim>
   void
-  VtuWriter<dim>::declare_parameters(ParameterHandler &prm)
+  VtuWriter<dim>::parse_parameters(const OutputParameters &parameters)
   {
-    prm.enter_subsection("Output");
-    prm.declare_entry("Write vtu",
-                      "true",
-                      Patterns::Bool(),
-                      "Whether to write VTU/PVTU files and solution.pvd. "
-                      "false skips all output work.");
-    prm.declare_entry("Compression",
-                      "fast",
-                      Patterns::Selection("none|fast|best"),
-                      "zlib compression of the VTU files: none (largest "
-                      "files, quickest to write), fast (zlib's fastest "
-                      "level: files about as small, written several times "
-                      "faster than with best) or best (smallest files).");
-    prm.declare_entry(
-      "Cells per piece",
-      "65536",
-      Patterns::Integer(1),
-      "Each rank writes its cells as VTU pieces (one .vtu file each, all "
-      "listed in the .pvtu record) of at most this many cells. A write needs "
-      "memory for one piece's patches and compressed data beyond the run's "
-      "own: about 1.2 kB per cell in 3D with linear elements, 80 MB per "
-      "piece by default.");
-    prm.leave_subsection();
-  }
-
-
-
-  template <int dim>
-  void
-  VtuWriter<dim>::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Output");
-    write_vtu                = prm.get_bool("Write vtu");
-    const std::string choice = prm.get("Compression");
-    compression     = choice == "none" ? DataOutBase::VtkFlags::no_compression :
-                      choice == "fast" ? DataOutBase::VtkFlags::best_speed :
-                                         DataOutBase::VtkFlags::best_compression;
-    cells_per_piece = prm.get_integer("Cells per piece");
-    prm.leave_subsection();
+    write_vtu       = parameters.write_vtu;
+    compression     = parameters.compression == "none" ?
+                        DataOutBase::VtkFlags::no_compression :
+                      parameters.compression == "fast" ?
+                        DataOutBase::VtkFlags::best_speed :
+                        DataOutBase::VtkFlags::best_compression;
+    cells_per_piece = parameters.cells_per_piece;
   }
 
 

@@ -24,8 +24,9 @@ namespace dyncontact
       declare_parameters(ParameterHandler &prm)
       {
         prm.enter_subsection("Postprocess");
+        prm.enter_subsection("Error energy norm");
         prm.declare_entry(
-          "Error norm interval",
+          "Interval",
           "output times",
           Patterns::Selection("output times|every step"),
           "When the energy-norm error against the exact solution is "
@@ -35,13 +36,16 @@ namespace dyncontact
           "the column between them; or every step (for the maximum over "
           "time).");
         prm.leave_subsection();
+        prm.leave_subsection();
       }
 
       void
       parse_parameters(ParameterHandler &prm) override
       {
         prm.enter_subsection("Postprocess");
-        every_step = (prm.get("Error norm interval") == "every step");
+        prm.enter_subsection("Error energy norm");
+        every_step = (prm.get("Interval") == "every step");
+        prm.leave_subsection();
         prm.leave_subsection();
       }
 

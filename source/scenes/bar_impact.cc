@@ -86,8 +86,8 @@ namespace dyncontact
                       Patterns::Double(-1e9, 1e9),
                       "Distance g0 between the bar's end x = 0 "
                       "and the wall at x = -g0, in m (negative: the bar "
-                      "starts inside the wall; see Contact "
-                      "solver/Initial penetration).");
+                      "starts inside the wall; see "
+                      "Contact/Initial penetration).");
     prm.declare_entry("Cells along length",
                       "40",
                       Patterns::Integer(1),

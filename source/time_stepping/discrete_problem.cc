@@ -15,11 +15,12 @@ namespace dyncontact
 {
   template <int dim>
   DiscreteProblem<dim>::DiscreteProblem(
-    ParameterHandler         &prm,
-    const Scheme             &scheme,
-    TimeStepController       &time_step_controller,
-    const ConditionalOStream &pcout,
-    const MPI_Comm            comm)
+    ParameterHandler                                   &prm,
+    const Scheme                                       &scheme,
+    const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
+    TimeStepController                                 &time_step_controller,
+    const ConditionalOStream                           &pcout,
+    const MPI_Comm                                      comm)
     : triangulation(comm)
     , comm(comm)
     , pcout(pcout)
@@ -27,8 +28,6 @@ namespace dyncontact
     , time_step_controller(time_step_controller)
   {
     solver_parameters.parse_parameters(prm);
-    typename SemiDiscreteSystem<dim>::Parameters system_parameters;
-    system_parameters.parse_parameters(prm);
     system = std::make_unique<SemiDiscreteSystem<dim>>(system_parameters,
                                                        mapping,
                                                        comm);

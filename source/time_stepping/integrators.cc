@@ -1,6 +1,5 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include <dyncontact/time_stepping/integrators.h>
 
@@ -357,37 +356,6 @@ namespace dyncontact
                 ExcMessage("Time integration/Scheme must be one of " + names +
                            "; got '" + name + "'."));
     return schemes().front();
-  }
-
-
-
-  void
-  TimeIntegrator::declare_parameters(ParameterHandler &prm)
-  {
-    std::string names, documentation;
-    for (const Scheme &scheme : schemes())
-      {
-        names += (names.empty() ? "" : "|") + scheme.name;
-        documentation += (documentation.empty() ? "" : ", ") + scheme.name +
-                         " (" + scheme.description + ")";
-      }
-    prm.enter_subsection("Time integration");
-    prm.declare_entry("Scheme",
-                      "N-CS++",
-                      Patterns::Selection(names),
-                      "Time integrator: " + documentation + ".");
-    prm.leave_subsection();
-  }
-
-
-
-  const Scheme &
-  TimeIntegrator::parse_scheme(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Time integration");
-    const std::string name = prm.get("Scheme");
-    prm.leave_subsection();
-    return scheme_by_name(name);
   }
 
 

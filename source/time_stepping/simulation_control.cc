@@ -1,4 +1,3 @@
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
 #include <dyncontact/base/input_checks.h>
@@ -12,49 +11,6 @@
 
 namespace dyncontact
 {
-  void
-  SimulationControl::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Time integration");
-    prm.declare_entry("End time",
-                      "2.5",
-                      Patterns::Double(0.),
-                      "Final time T, in s (>= 0). If T is not a multiple of "
-                      "tau, the last step ends after T. Not used by the "
-                      "static scheme (no time: its solution is at t = 1, the "
-                      "load factor).");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Output");
-    prm.declare_entry("Output interval",
-                      "0.05",
-                      Patterns::Double(0.),
-                      "Time between two output times, in s (>= 0; 0: every "
-                      "step): VTU files are written then (if Write vtu), and "
-                      "the energy-norm error is integrated then (with "
-                      "Postprocess/Error norm interval = output times). "
-                      "statistics.tsv gets every step.");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Checkpointing");
-    prm.declare_entry("Interval in steps",
-                      "0",
-                      Patterns::Integer(0),
-                      "Write a checkpoint every this many steps (0: not by "
-                      "steps). Checkpoints go to <Output directory>/"
-                      "checkpoints; each is written to a new folder and only "
-                      "then marked as the last good one.");
-    prm.declare_entry("Interval in minutes",
-                      "0",
-                      Patterns::Double(0.),
-                      "Write a checkpoint when this much wall-clock time (in "
-                      "minutes) has passed since the last one (0: not by "
-                      "time).");
-    prm.leave_subsection();
-  }
-
-
-
   SimulationControl::SimulationControl(
     const MPI_Comm            comm,
     const TimeStepController &time_step_controller)
@@ -65,12 +21,10 @@ namespace dyncontact
 
 
   void
-  SimulationControl::parse_parameters(ParameterHandler &prm,
+  SimulationControl::parse_parameters(const Parameters &parameters,
                                       const bool        static_problem)
   {
-    prm.enter_subsection("Time integration");
-    end_time = prm.get_double("End time");
-    prm.leave_subsection();
+    end_time = parameters.end_time;
     AssertThrow(std::isfinite(end_time) && end_time >= 0.,
                 ExcMessage("Time integration/End time must be a finite "
                            "number >= 0 (s); got " +
@@ -80,18 +34,13 @@ namespace dyncontact
       // initial state is at 0)
       end_time = 1.;
 
-    prm.enter_subsection("Output");
-    output_interval = prm.get_double("Output interval");
-    prm.leave_subsection();
+    output_interval = parameters.output_interval;
     AssertThrow(std::isfinite(output_interval) && output_interval >= 0.,
                 ExcMessage("Output/Output interval must be a finite number "
                            ">= 0 (s); got " +
                            format_number(output_interval) + "."));
-
-    prm.enter_subsection("Checkpointing");
-    checkpoint_steps   = prm.get_integer("Interval in steps");
-    checkpoint_minutes = prm.get_double("Interval in minutes");
-    prm.leave_subsection();
+    checkpoint_steps   = parameters.checkpoint_steps;
+    checkpoint_minutes = parameters.checkpoint_minutes;
 
     is_static   = static_problem;
     step        = 0;

@@ -1,5 +1,4 @@
 #include <deal.II/base/exceptions.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include <dyncontact/base/input_checks.h>
 #include <dyncontact/time_stepping/row_force.h>
@@ -14,83 +13,23 @@
 namespace dyncontact
 {
   void
-  TimeStepController::declare_parameters(ParameterHandler &prm)
+  TimeStepController::parse_parameters(
+    const TimeIntegrationParameters &parameters,
+    const bool                       static_problem,
+    const double                     end)
   {
-    prm.enter_subsection("Time integration");
-    prm.declare_entry("Time step",
-                      "0.0125",
-                      Patterns::Double(0.),
-                      "Time step tau, in s (> 0).");
-    prm.declare_entry("Time step adaptation",
-                      "false",
-                      Patterns::Bool(),
-                      "If a step's active-set iteration fails, retry it with "
-                      "half the time step (and keep that), down to Time step "
-                      "/ 1024; otherwise the run stops with a message.");
-    prm.declare_entry(
-      "Time step control",
-      "fixed",
-      Patterns::Selection("fixed|adaptive"),
-      "fixed: every step takes Time step. adaptive: tau moves between the "
-      "levels Time step * 2^k inside [Minimum time step, Maximum time "
-      "step]: a step whose error estimate (see doc/running.md) exceeds "
-      "Time step tolerance is repeated with tau/2, tau doubles after two "
-      "steps below 1/8 of it; a step that would bring a contact row into "
-      "contact (or release one) is shortened to end at the predicted "
-      "moment of that event, and the last step ends at End time. Not used "
-      "by the static scheme.");
-    prm.declare_entry(
-      "Event location",
-      "onset and separation",
-      Patterns::Selection("onset and separation|every row|none"),
-      "Adaptive control: which contact events end a step at their "
-      "predicted moment. onset and separation: the first row to come into "
-      "contact when none is active, and the release when no row stays "
-      "active; every row: each row that comes into contact or is released "
-      "(in a contact zone that grows node by node nearly every step is "
-      "shortened, each with its own step matrix); none.");
-    prm.declare_entry("Minimum time step",
-                      "0",
-                      Patterns::Double(0.),
-                      "Smallest tau of the adaptive control, in s (> 0 and "
-                      "<= Time step; 0 means Time step / 64).");
-    prm.declare_entry("Maximum time step",
-                      "0",
-                      Patterns::Double(0.),
-                      "Largest tau of the adaptive control, in s (>= Time "
-                      "step; 0 means Time step).");
-    prm.declare_entry("Time step tolerance",
-                      "0.01",
-                      Patterns::Double(0.),
-                      "Adaptive control: the largest error estimate of a "
-                      "step that is accepted, relative to the velocity "
-                      "scale sqrt(2 E) (dimensionless, > 0).");
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  TimeStepController::parse_parameters(ParameterHandler &prm,
-                                       const bool        static_problem,
-                                       const double      end)
-  {
-    end_time = end;
-    prm.enter_subsection("Time integration");
-    time_step            = prm.get_double("Time step");
-    time_step_adaptation = prm.get_bool("Time step adaptation");
-    adaptive = prm.get("Time step control") == "adaptive" && !static_problem;
-    min_time_step = prm.get_double("Minimum time step");
-    max_time_step = prm.get_double("Maximum time step");
-    tolerance     = prm.get_double("Time step tolerance");
-    {
-      const std::string location = prm.get("Event location");
-      event_location             = location == "none" ? EventLocation::none :
-                                   location == "every row" ?
-                                                        EventLocation::every_row :
-                                                        EventLocation::onset_and_separation;
-    }
-    prm.leave_subsection();
+    end_time             = end;
+    time_step            = parameters.time_step;
+    time_step_adaptation = parameters.time_step_adaptation;
+    adaptive             = parameters.adaptive && !static_problem;
+    min_time_step        = parameters.minimum_time_step;
+    max_time_step        = parameters.maximum_time_step;
+    tolerance            = parameters.tolerance;
+    event_location       = parameters.event_location == "none" ?
+                             EventLocation::none :
+                           parameters.event_location == "every row" ?
+                             EventLocation::every_row :
+                             EventLocation::onset_and_separation;
     AssertThrow(std::isfinite(time_step) && time_step > 0.,
                 ExcMessage("Time integration/Time step must be a finite "
                            "number > 0 (s); got " +

@@ -11,16 +11,18 @@ namespace dealii
 namespace dyncontact
 {
   /**
-   * The parameters that belong to no single component: the dimension, the
-   * output directory, the global refinements of the scene's mesh, and the
-   * folder of the prm file. Every other group is declared and read by the
-   * component that uses it (declare_all_parameters() collects them).
+   * The top level and subsection Mesh: the dimension, the output
+   * directory, the polynomial degree, the global refinements of the
+   * scene's mesh; and the folder of the prm file. Every subsection has one
+   * owner that declares and reads it (parameter_owners() lists them).
    */
   struct GlobalParameters
   {
     unsigned int dimension           = 2;
     std::string  output_directory    = "results";
     unsigned int initial_refinements = 0;
+    /// Degree p of FE_Q(p)^dim.
+    unsigned int degree = 1;
     /// Folder of the prm file (relative file names in it refer to it).
     std::string input_directory;
 

@@ -39,7 +39,7 @@ namespace dyncontact
       int slave_side = -1;
       /// In m; 0: the scene's default.
       double search_radius = 0.;
-      /// From subsection "Contact solver": reject or project an initially
+      /// Initial penetration: reject or project an initially
       /// penetrating configuration.
       bool project_initial_penetration = false;
 

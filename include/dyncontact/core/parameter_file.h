@@ -1,7 +1,9 @@
 #ifndef dyncontact_core_parameter_file_h
 #define dyncontact_core_parameter_file_h
 
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -10,7 +12,24 @@ namespace dealii
 
 namespace dyncontact
 {
-  /// Declares every parameter of the program (all components and plugins).
+  /**
+   * A class that owns subsections of the prm: it declares every entry of
+   * them (a plugin manager also has its plugins declare theirs, each in
+   * <Component>/<Plugin>), reads them, and hands the values to the
+   * components that use them. No subsection has two owners (tested by
+   * tests/parameter_owners).
+   */
+  struct ParameterOwner
+  {
+    std::string                                     name;
+    std::function<void(dealii::ParameterHandler &)> declare_parameters;
+  };
+
+  /// Every owner of parameters, in the order of declaration.
+  const std::vector<ParameterOwner> &
+  parameter_owners();
+
+  /// Declares every parameter of the program (all owners, with plugins).
   void
   declare_all_parameters(dealii::ParameterHandler &prm);
 

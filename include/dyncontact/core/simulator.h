@@ -91,6 +91,8 @@ namespace dyncontact
     ConditionalOStream           pcout;
     std::unique_ptr<TimerOutput> timer;
 
+    /// subsection Time integration
+    TimeIntegrationParameters time_integration;
     /// tau (declared before the control, which reads it)
     TimeStepController                    time_step_controller;
     SimulationControl                     control;

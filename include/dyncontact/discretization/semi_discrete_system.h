@@ -23,11 +23,6 @@
 
 class Epetra_CrsGraph;
 
-namespace dealii
-{
-  class ParameterHandler;
-}
-
 namespace dyncontact
 {
   using VectorType = TrilinosWrappers::MPI::Vector;
@@ -131,14 +126,10 @@ namespace dyncontact
   public:
     struct Parameters
     {
-      unsigned int degree      = 1;
-      bool         lumped_mass = true;
-
-      /// Declares "Polynomial degree" and "Time integration/Mass matrix".
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
+      /// Polynomial degree (GlobalParameters).
+      unsigned int degree = 1;
+      /// Time integration/Mass matrix = lumped (TimeIntegrationParameters).
+      bool lumped_mass = true;
     };
 
     SemiDiscreteSystem(const Parameters   &parameters,

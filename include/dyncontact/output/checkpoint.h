@@ -33,11 +33,14 @@ namespace dyncontact
   class Checkpoints
   {
   public:
-    /// Declares "Checkpointing/Resume".
+    /// Declares subsection Checkpointing: Resume, Interval in steps,
+    /// Interval in minutes (the intervals are SimulationControl's, which
+    /// decides the checkpoint steps).
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Reads Resume and records the critical parameters of @p prm.
+    /// Reads subsection Checkpointing and records the critical parameters
+    /// of @p prm.
     void
     parse_parameters(ParameterHandler  &prm,
                      const std::string &output_directory,
@@ -47,6 +50,20 @@ namespace dyncontact
     resume() const
     {
       return resume_run;
+    }
+
+    /// Checkpointing/Interval in steps (0: not by steps).
+    unsigned int
+    interval_in_steps() const
+    {
+      return interval_steps;
+    }
+
+    /// Checkpointing/Interval in minutes (0: not by wall time).
+    double
+    interval_in_minutes() const
+    {
+      return interval_minutes;
     }
 
     /// The folder of a new checkpoint for @p step (created, empty).
@@ -84,9 +101,11 @@ namespace dyncontact
     static std::string
     verify(const std::string &directory);
 
-    std::string root;
-    MPI_Comm    comm       = MPI_COMM_SELF;
-    bool        resume_run = false;
+    std::string  root;
+    MPI_Comm     comm             = MPI_COMM_SELF;
+    bool         resume_run       = false;
+    unsigned int interval_steps   = 0;
+    double       interval_minutes = 0.;
     /// The parameters a resumed run must share with its checkpoint, as text.
     std::string critical_parameters;
   };

@@ -4,11 +4,6 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-namespace dealii
-{
-  class ParameterHandler;
-}
-
 namespace dyncontact
 {
   using namespace dealii;
@@ -24,18 +19,9 @@ namespace dyncontact
   class Progress
   {
   public:
-    struct Parameters
-    {
-      /// In s of wall time; 0: no progress lines.
-      double interval = 10.;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    Progress(const Parameters &parameters, const ConditionalOStream &pcout);
+    /// @p interval: Output/Progress interval, in s of wall time; 0: no
+    /// progress lines.
+    Progress(const double interval, const ConditionalOStream &pcout);
 
     /// Starts the clock (after the set-up, before the first step).
     void
@@ -53,7 +39,7 @@ namespace dyncontact
          const unsigned int linear_iterations);
 
   private:
-    const Parameters          parameters;
+    const double              interval;
     const ConditionalOStream &pcout;
     Timer                     clock;
     double                    last_line      = 0.;

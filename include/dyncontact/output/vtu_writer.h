@@ -2,6 +2,7 @@
 #define dyncontact_output_vtu_writer_h
 
 #include <dyncontact/core/simulator_access.h>
+#include <dyncontact/output/output_parameters.h>
 
 #include <map>
 #include <string>
@@ -25,12 +26,9 @@ namespace dyncontact
   class VtuWriter : public SimulatorAccess<dim>
   {
   public:
-    /// Declares "Output/Write vtu".
-    static void
-    declare_parameters(ParameterHandler &prm);
-
+    /// Takes Output/Write vtu, Compression and Cells per piece.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(const OutputParameters &parameters);
 
     bool
     is_enabled() const

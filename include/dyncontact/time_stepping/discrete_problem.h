@@ -35,13 +35,16 @@ namespace dyncontact
   class DiscreteProblem
   {
   public:
-    /// Reads the parameters of the system, the contact rows and the
-    /// active-set solver from @p prm.
-    DiscreteProblem(ParameterHandler         &prm,
-                    const Scheme             &scheme,
-                    TimeStepController       &time_step_controller,
-                    const ConditionalOStream &pcout,
-                    const MPI_Comm            comm);
+    /// Reads the parameters of the contact rows and the active-set solver
+    /// from @p prm; @p system_parameters: the polynomial degree and the
+    /// mass matrix.
+    DiscreteProblem(
+      ParameterHandler                                   &prm,
+      const Scheme                                       &scheme,
+      const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
+      TimeStepController                                 &time_step_controller,
+      const ConditionalOStream                           &pcout,
+      const MPI_Comm                                      comm);
 
     ~DiscreteProblem();
 

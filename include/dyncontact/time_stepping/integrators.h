@@ -10,11 +10,6 @@
 #include <utility>
 #include <vector>
 
-namespace dealii
-{
-  class ParameterHandler;
-}
-
 namespace dyncontact
 {
   /// What one step reports to the diagnostics and to the step control.
@@ -264,14 +259,6 @@ namespace dyncontact
   class TimeIntegrator
   {
   public:
-    /// Declares "Time integration/Scheme".
-    static void
-    declare_parameters(ParameterHandler &prm);
-
-    /// The scheme named in the prm.
-    static const Scheme &
-    parse_scheme(ParameterHandler &prm);
-
     /// @p tau: the step matrix built now (the first step's).
     TimeIntegrator(const Scheme                         &scheme,
                    const double                          tau,

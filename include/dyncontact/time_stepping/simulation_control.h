@@ -7,11 +7,6 @@
 #include <map>
 #include <string>
 
-namespace dealii
-{
-  class ParameterHandler;
-}
-
 namespace dyncontact
 {
   using namespace dealii;
@@ -52,18 +47,25 @@ namespace dyncontact
   class SimulationControl
   {
   public:
-    /// Declares Time integration/End time; Output/Output interval;
-    /// Checkpointing/Interval in steps, Interval in minutes.
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// The values it is handed by the owners of their subsections:
+    /// Time integration/End time (TimeIntegrationParameters),
+    /// Output/Output interval (OutputParameters), Checkpointing/Interval in
+    /// steps and Interval in minutes (Checkpoints).
+    struct Parameters
+    {
+      double       end_time           = 2.5;
+      double       output_interval    = 0.05;
+      unsigned int checkpoint_steps   = 0;
+      double       checkpoint_minutes = 0.;
+    };
 
     /// @p time_step_controller: the owner of tau (must outlive this).
     SimulationControl(const MPI_Comm            comm,
                       const TimeStepController &time_step_controller);
 
-    /// Reads and checks the parameters; @p is_static: one step, to t = 1.
+    /// Takes and checks the parameters; @p is_static: one step, to t = 1.
     void
-    parse_parameters(ParameterHandler &prm, const bool is_static);
+    parse_parameters(const Parameters &parameters, const bool is_static);
 
     unsigned int
     get_step() const

@@ -2,15 +2,11 @@
 #define dyncontact_time_stepping_time_step_controller_h
 
 #include <dyncontact/time_stepping/step_size_control.h>
+#include <dyncontact/time_stepping/time_integration_parameters.h>
 
 #include <map>
 #include <string>
 #include <vector>
-
-namespace dealii
-{
-  class ParameterHandler;
-}
 
 namespace dyncontact
 {
@@ -39,19 +35,15 @@ namespace dyncontact
   class TimeStepController
   {
   public:
-    /// Declares Time integration/Time step, Time step adaptation, Time
-    /// step control, Event location, Minimum/Maximum time step, Time step
-    /// tolerance.
-    static void
-    declare_parameters(ParameterHandler &prm);
-
-    /// Reads and checks the parameters; @p is_static: one solve, no time
-    /// step control; @p end_time (SimulationControl's End time) bounds the
-    /// number of steps, and the adaptive control's last step ends there.
+    /// Takes and checks Time integration/Time step, Time step adaptation,
+    /// Time step control, Event location, Minimum/Maximum time step, Time
+    /// step tolerance; @p is_static: one solve, no time step control;
+    /// @p end_time (SimulationControl's End time) bounds the number of
+    /// steps, and the adaptive control's last step ends there.
     void
-    parse_parameters(ParameterHandler &prm,
-                     const bool        is_static,
-                     const double      end_time);
+    parse_parameters(const TimeIntegrationParameters &parameters,
+                     const bool                       is_static,
+                     const double                     end_time);
 
     /// The tau of the next trial (after an accepted step: the level the
     /// next step starts from).

@@ -1,0 +1,104 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/time_integration_parameters.h>
+
+namespace dyncontact
+{
+  void
+  TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    std::string names, documentation;
+    for (const Scheme &scheme : schemes())
+      {
+        names += (names.empty() ? "" : "|") + scheme.name;
+        documentation += (documentation.empty() ? "" : ", ") + scheme.name +
+                         " (" + scheme.description + ")";
+      }
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("Scheme",
+                      "N-CS++",
+                      Patterns::Selection(names),
+                      "Time integrator: " + documentation + ".");
+    prm.declare_entry("Mass matrix",
+                      "lumped",
+                      Patterns::Selection("lumped|consistent"),
+                      "lumped: diagonal, by Gauss-Lobatto (nodal) quadrature; "
+                      "consistent: by Gauss quadrature.");
+    prm.declare_entry("End time",
+                      "2.5",
+                      Patterns::Double(0.),
+                      "Final time T, in s (>= 0). If T is not a multiple of "
+                      "tau, the last step ends after T. Not used by the "
+                      "static scheme (no time: its solution is at t = 1, the "
+                      "load factor).");
+    prm.declare_entry("Time step",
+                      "0.0125",
+                      Patterns::Double(0.),
+                      "Time step tau, in s (> 0).");
+    prm.declare_entry("Time step adaptation",
+                      "false",
+                      Patterns::Bool(),
+                      "If a step's active-set iteration fails, retry it with "
+                      "half the time step (and keep that), down to Time step "
+                      "/ 1024; otherwise the run stops with a message.");
+    prm.declare_entry(
+      "Time step control",
+      "fixed",
+      Patterns::Selection("fixed|adaptive"),
+      "fixed: every step takes Time step. adaptive: tau moves between the "
+      "levels Time step * 2^k inside [Minimum time step, Maximum time "
+      "step]: a step whose error estimate (see doc/running.md) exceeds "
+      "Time step tolerance is repeated with tau/2, tau doubles after two "
+      "steps below 1/8 of it; a step that would bring a contact row into "
+      "contact (or release one) is shortened to end at the predicted "
+      "moment of that event, and the last step ends at End time. Not used "
+      "by the static scheme.");
+    prm.declare_entry(
+      "Event location",
+      "onset and separation",
+      Patterns::Selection("onset and separation|every row|none"),
+      "Adaptive control: which contact events end a step at their "
+      "predicted moment. onset and separation: the first row to come into "
+      "contact when none is active, and the release when no row stays "
+      "active; every row: each row that comes into contact or is released "
+      "(in a contact zone that grows node by node nearly every step is "
+      "shortened, each with its own step matrix); none.");
+    prm.declare_entry("Minimum time step",
+                      "0",
+                      Patterns::Double(0.),
+                      "Smallest tau of the adaptive control, in s (> 0 and "
+                      "<= Time step; 0 means Time step / 64).");
+    prm.declare_entry("Maximum time step",
+                      "0",
+                      Patterns::Double(0.),
+                      "Largest tau of the adaptive control, in s (>= Time "
+                      "step; 0 means Time step).");
+    prm.declare_entry("Time step tolerance",
+                      "0.01",
+                      Patterns::Double(0.),
+                      "Adaptive control: the largest error estimate of a "
+                      "step that is accepted, relative to the velocity "
+                      "scale sqrt(2 E) (dimensionless, > 0).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  TimeIntegrationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    scheme               = prm.get("Scheme");
+    lumped_mass          = (prm.get("Mass matrix") == "lumped");
+    end_time             = prm.get_double("End time");
+    time_step            = prm.get_double("Time step");
+    time_step_adaptation = prm.get_bool("Time step adaptation");
+    adaptive             = (prm.get("Time step control") == "adaptive");
+    event_location       = prm.get("Event location");
+    minimum_time_step    = prm.get_double("Minimum time step");
+    maximum_time_step    = prm.get_double("Maximum time step");
+    tolerance            = prm.get_double("Time step tolerance");
+    prm.leave_subsection();
+  }
+} // namespace dyncontact
