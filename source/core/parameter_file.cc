@@ -244,6 +244,55 @@ namespace dyncontact
                              "' is refused; the values allowed are " +
                              Utilities::trim(allowed) + "."));
     }
+
+
+
+    /// Stops with a message if @p entry, set in subsection @p path where it
+    /// is not declared, is declared elsewhere or has moved (@p at: the
+    /// line); else leaves it to the parser, whose message names it.
+    void
+    refuse_misplaced(const std::set<std::string>    &declared,
+                     const std::vector<std::string> &path,
+                     const std::string              &entry,
+                     const std::string              &at)
+    {
+      std::string where;
+      for (const auto &p : path)
+        where += p + "/";
+      // an entry of an earlier layout
+      for (const auto &[before, now] : moved_entries())
+        AssertThrow(where + entry != before,
+                    ExcMessage(at + "'" + before + "' has moved to '" + now +
+                               "' (see doc/running.md)."));
+      // the subsections that do declare an entry of this name
+      const std::string name = (path.size() == 1 && path[0] == "Scene" &&
+                                entry == "Contact search radius") ?
+                                 "Search radius" :
+                                 entry;
+      std::string       candidates;
+      for (const auto &full : declared)
+        if (full.size() > name.size() &&
+            full.compare(full.size() - name.size() - 1,
+                         name.size() + 1,
+                         "/" + name) == 0)
+          candidates += (candidates.empty() ? "" : ", ") +
+                        full.substr(0, full.size() - name.size() - 1);
+      if (candidates.empty())
+        return; // the parser's own message names the entry
+      AssertThrow(!(path.size() == 1 && path[0] == "Scene"),
+                  ExcMessage(at + "'Scene/" + entry +
+                             "' has moved: each scene reads its own "
+                             "subsection now. Set '" +
+                             name + "' in subsection " + candidates +
+                             " (see doc/running.md)."));
+      AssertThrow(false,
+                  ExcMessage(
+                    at + "subsection '" +
+                    (path.empty() ? std::string("(top level)") :
+                                    where.substr(0, where.size() - 1)) +
+                    "' has no entry '" + entry +
+                    "'; it is declared in subsection " + candidates + "."));
+    }
   } // namespace
 
 
@@ -291,40 +340,7 @@ namespace dyncontact
                               at);
                 continue;
               }
-            // an entry of an earlier layout
-            for (const auto &[before, now] : moved_entries())
-              AssertThrow(where + entry != before,
-                          ExcMessage(at + "'" + before + "' has moved to '" +
-                                     now + "' (see doc/running.md)."));
-            // the subsections that do declare an entry of this name
-            const std::string name = (path.size() == 1 && path[0] == "Scene" &&
-                                      entry == "Contact search radius") ?
-                                       "Search radius" :
-                                       entry;
-            std::string       candidates;
-            for (const auto &full : declared)
-              if (full.size() > name.size() &&
-                  full.compare(full.size() - name.size() - 1,
-                               name.size() + 1,
-                               "/" + name) == 0)
-                candidates += (candidates.empty() ? "" : ", ") +
-                              full.substr(0, full.size() - name.size() - 1);
-            if (candidates.empty())
-              continue; // the parser's own message names the entry
-            AssertThrow(!(path.size() == 1 && path[0] == "Scene"),
-                        ExcMessage(at + "'Scene/" + entry +
-                                   "' has moved: each scene reads its own "
-                                   "subsection now. Set '" +
-                                   name + "' in subsection " + candidates +
-                                   " (see doc/running.md)."));
-            AssertThrow(false,
-                        ExcMessage(at + "subsection '" +
-                                   (path.empty() ?
-                                      std::string("(top level)") :
-                                      where.substr(0, where.size() - 1)) +
-                                   "' has no entry '" + entry +
-                                   "'; it is declared in subsection " +
-                                   candidates + "."));
+            refuse_misplaced(declared, path, entry, at);
           }
       }
   }

@@ -57,6 +57,10 @@ namespace dyncontact
     time_step_controller.parse_parameters(time_integration,
                                           scheme.is_static,
                                           control.get_end_time());
+    // adaptive steps end at the output times (fixed ones output at the
+    // first step at or after each)
+    if (output.output_interval > 0.)
+      time_step_controller.stop_at_multiples_of(output.output_interval);
     problem = std::make_unique<DiscreteProblem<dim>>(
       prm,
       scheme,

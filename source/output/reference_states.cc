@@ -89,7 +89,7 @@ namespace dyncontact
                   "Reference solutions need the same mesh in both "
                   "runs: they cannot be combined with adaptive "
                   "meshes (Mesh refinement/Refinement interval > 0)."));
-    controller.stop_at_multiples_of(interval, "Reference solution/Interval");
+    controller.require_multiples_of(interval, "Reference solution/Interval");
   }
 
 

@@ -178,12 +178,7 @@ namespace dyncontact
                                 comes_into_contact,
                                 is_released,
                                 comm);
-    fraction = Utilities::MPI::min(fraction, comm);
-    // an event in (t_n + tau, t_n + 2 tau): two steps of half that length,
-    // so that the first one's look ahead ends at the event
-    if (fraction >= 1. && fraction < 2.)
-      return fraction / 2.;
-    return std::min(fraction, 1.);
+    return Utilities::MPI::min(fraction, comm);
   }
 
 

@@ -88,7 +88,16 @@ namespace dyncontact
 
 
   void
-  TimeStepController::stop_at_multiples_of(const double       interval,
+  TimeStepController::stop_at_multiples_of(const double interval)
+  {
+    Assert(interval > 0., ExcInternalError());
+    stop_intervals.emplace_back(interval, false);
+  }
+
+
+
+  void
+  TimeStepController::require_multiples_of(const double       interval,
                                            const std::string &entry)
   {
     AssertThrow(!is_static,
@@ -106,7 +115,7 @@ namespace dyncontact
                            "multiple, or 'Time integration/Time step "
                            "control = adaptive' (its steps end at those "
                            "times)."));
-    stop_interval = interval;
+    stop_intervals.emplace_back(interval, true);
   }
 
 
@@ -114,9 +123,10 @@ namespace dyncontact
   void
   TimeStepController::begin_step(const double time)
   {
-    step_start    = time;
-    event_located = false;
-    may_grow      = false;
+    step_start          = time;
+    event_located       = false;
+    may_grow            = false;
+    pass_optional_times = false;
   }
 
 
@@ -124,18 +134,33 @@ namespace dyncontact
   double
   TimeStepController::trial_timestep()
   {
-    if (adaptive && step_start + tau > end_time)
-      shorten(end_time - step_start);
-    if (adaptive && stop_interval > 0.)
+    uncut_tau         = tau;
+    uncut_tau_changed = tau_changed;
+    ends_at           = EndsAt::level;
+    if (!adaptive)
+      return tau;
+    if (step_start + tau > end_time)
       {
-        // the next multiple of the interval after the step's start (a start
-        // within 1e-6 intervals of a multiple is at it); a step that ends
-        // there up to round-off is not shortened
-        const double stop =
-          (std::floor(step_start / stop_interval + 1e-6) + 1.) * stop_interval;
-        if (step_start + tau > stop + 1e-9 * tau)
-          shorten(stop - step_start);
+        shorten(end_time - step_start);
+        ends_at = EndsAt::required_time;
       }
+    for (const auto &[interval, required] : stop_intervals)
+      if (required || !pass_optional_times)
+        {
+          // the next multiple of the interval after the step's start (a
+          // start within 1e-6 intervals of a multiple is at it); a step that
+          // ends there up to round-off is not shortened
+          const double stop =
+            (std::floor(step_start / interval + 1e-6) + 1.) * interval;
+          if (step_start + tau > stop + 1e-9 * tau)
+            {
+              shorten(stop - step_start);
+              ends_at =
+                required ? EndsAt::required_time : EndsAt::optional_time;
+            }
+          else if (required && step_start + tau > stop - 1e-9 * tau)
+            ends_at = EndsAt::required_time;
+        }
     return tau;
   }
 
@@ -175,7 +200,7 @@ namespace dyncontact
     // end the step at the predicted moment (once per step)
     if (!event_located && event_location != EventLocation::none)
       {
-        const double theta =
+        const double fraction =
           StepSizeControl::event_fraction(operators,
                                           row_operator,
                                           active_before,
@@ -188,6 +213,23 @@ namespace dyncontact
                                           event_location ==
                                             EventLocation::every_row,
                                           comm);
+        // an event in (t_n + tau, t_n + 2 tau), which N-CS++'s projection
+        // looks at: after an optional time, that time is passed (the step
+        // takes its tau again); a step that ends at a required time or at
+        // End time keeps it (the event is located in the step after it);
+        // a level step is cut to two steps of half the time to the event,
+        // so that the first one's look ahead ends at the event
+        const bool   beyond = (fraction >= 1. && fraction < 2.);
+        const double theta  = !beyond                  ? fraction :
+                              ends_at == EndsAt::level ? fraction / 2. :
+                                                         1.;
+        if (beyond && ends_at == EndsAt::optional_time)
+          {
+            pass_optional_times = true;
+            tau                 = uncut_tau;
+            tau_changed         = uncut_tau_changed;
+            return Verdict::retry;
+          }
         // not below the Minimum time step
         if (theta < 1. - 1e-2 && theta * tau >= min_time_step)
           {

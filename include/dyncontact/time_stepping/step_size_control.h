@@ -40,13 +40,14 @@ namespace dyncontact
   class StepSizeControl
   {
   public:
-    /// The fraction theta in (0, 1] of the trial step (of length trial.tau,
+    /// The fraction in (0, 2] of the trial step (of length trial.tau,
     /// with the @p operators of that tau; from u_old, udot_old
     /// with @p active_before and the rows' forces @p forces_before to the
-    /// trial @p u with @p trial) at which to end it, over all ranks: at its
-    /// first contact event, or at half the time to an event in the step
-    /// after it (N-CS++'s projection looks one step ahead); 1 if none is
-    /// predicted after the first hundredth of the step.
+    /// trial @p u with @p trial) at which the first contact event is
+    /// predicted, over all ranks: in (0, 1] inside the step, in (1, 2) in
+    /// the step after it (which N-CS++'s projection looks at); 2 if none is
+    /// predicted after the first hundredth of the step. The
+    /// TimeStepController decides where the step ends.
     static double
     event_fraction(const StepOperators       &operators,
                    const ContactRowOperator  &row_operator,

@@ -85,20 +85,29 @@ namespace dyncontact
     void
     reset(const std::size_t n_rows);
 
+    /// The adaptive control ends a step at every multiple of @p interval
+    /// (> 0) that it would pass (the output times), except where a contact
+    /// event lies within the step after that time (N-CS++'s projection
+    /// would see it from there): then the step takes its level, and the
+    /// time is passed. Fixed steps do not change.
+    void
+    stop_at_multiples_of(const double interval);
+
     /// The steps must reach every multiple of @p interval (the times of
     /// reference states, which a writing and a comparing run must both
     /// reach): the adaptive control ends a step there where it would pass
     /// one; a fixed Time step must divide it, or the run stops with a
     /// message naming @p entry (the parameter that sets the interval).
     void
-    stop_at_multiples_of(const double interval, const std::string &entry);
+    require_multiples_of(const double interval, const std::string &entry);
 
     /// A new step from @p time (until a trial is accepted).
     void
     begin_step(const double time);
 
     /// The tau of the next trial of the present step: get_timestep(), but
-    /// a step of the adaptive control that would pass End time ends there.
+    /// a step of the adaptive control that would pass End time or a time
+    /// of stop_at_multiples_of() or require_multiples_of() ends there.
     double
     trial_timestep();
 
@@ -226,9 +235,24 @@ namespace dyncontact
     double max_time_step        = 0.;
     double tolerance            = 1e-2;
     double end_time             = 0.;
-    /// stop_at_multiples_of()'s (0: none)
-    double        stop_interval  = 0.;
-    EventLocation event_location = EventLocation::onset_and_separation;
+    /// The intervals of stop_at_multiples_of() (false) and of
+    /// require_multiples_of() (true).
+    std::vector<std::pair<double, bool>> stop_intervals;
+    /// What the present trial ends at: a time of stop_at_multiples_of(),
+    /// one of require_multiples_of() or End time; nothing of these.
+    enum class EndsAt
+    {
+      level,
+      optional_time,
+      required_time
+    } ends_at = EndsAt::level;
+    /// The trial's tau and tau_changed before it was made to end at a time
+    /// (restored where an event follows an optional time).
+    double uncut_tau         = 0.;
+    bool   uncut_tau_changed = false;
+    /// Optional times are passed in the present step.
+    bool          pass_optional_times = false;
+    EventLocation event_location      = EventLocation::onset_and_separation;
 
     // state
     double tau       = 0.0125;
