@@ -69,7 +69,9 @@ def run(name, settings, extra_time="", extra=""):
             sys.exit("%s: no single 'set %s' line" % (base_file, key))
     prm = prm.replace("subsection Time integration\n",
                       "subsection Time integration\n" + extra_time, 1)
-    prm += "subsection Output\n  set Write vtu = false\n  set Progress interval = 0\nend\n"
+    # no output times inside the run: adaptive steps would end at them
+    prm += ("subsection Output\n  set Write vtu = false\n  set Progress interval = 0\n"
+            "  set Output interval = %.17g\nend\n" % entry("End time"))
     prm += extra
     with open(name + ".prm", "w") as f:
         f.write(prm)

@@ -146,4 +146,40 @@ main(int argc, char **argv)
         << check(first_step_after(fixed_written, interval, 0.025))
         << "\n  error_energy_norm sampled at the same times: "
         << check(same_times(sampled_times(fixed), fixed_written)) << "\n";
+
+  // an Output interval below the Minimum time step (tau / 64) does not
+  // make the steps that small: the output times are passed
+  const auto adaptive_prm = [](const std::string &entries) {
+    return bar_prm(2, "N-CS++", 20, 0.025, 0.2) +
+           "subsection Time integration\n  set Time step control = "
+           "adaptive\n" +
+           entries + "end\n";
+  };
+  const Statistics tiny =
+    run(adaptive_prm("") + "subsection Output\n  set Output interval = "
+                           "1e-5\nend\nset Output directory = tiny\n");
+  log() << "adaptive tau, Output interval = 1e-5 s: the smallest step is "
+        << check(min_of(tiny.column("time_step")) >= 0.025 / 64.)
+        << " >= Minimum time step\n";
+
+  // a level (0.1 s) above the Output interval (0.05 s): the steps cut to
+  // the output times are under the error control as the others
+  const auto over = [](const Statistics &s) {
+    unsigned int n = 0;
+    for (const double eta : s.column("time_step_estimate"))
+      n += (eta > 0.002);
+    return n;
+  };
+  const std::string coarse =
+    "  set Time step = 0.1\n  set Time step tolerance = 0.002\n";
+  const Statistics cut =
+    run(adaptive_prm(coarse) + "subsection Output\n  set Output interval = "
+                               "0.05\nend\nset Output directory = cut\n");
+  const Statistics uncut =
+    run(adaptive_prm(coarse) + "subsection Output\n  set Output interval = "
+                               "0\nend\nset Output directory = uncut\n");
+  log() << "adaptive, Time step 0.1 s, tolerance 0.002: steps above it with "
+        << "Output interval 0.05 s: " << over(cut)
+        << ", with 0: " << over(uncut) << ": "
+        << check(over(cut) <= over(uncut) + 1) << "\n";
 }

@@ -90,6 +90,8 @@ main(int argc, char **argv)
      "subsection Postprocess\n  set Error norm interval = every step\nend\n"},
     {"moved_initial_penetration",
      "subsection Contact solver\n  set Initial penetration = project\nend\n"},
+    {"slash_in_subsection",
+     "subsection Mesh refinement/Contact zone\n  set Distance = 1\nend\n"},
     {"entry_of_another_scene",
      "subsection Scene\n  subsection Bar impact\n    set Radius = 2\n"
      "  end\nend\n"},

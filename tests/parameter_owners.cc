@@ -16,7 +16,6 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,32 +25,12 @@ using namespace dyncontact;
 std::ofstream out("output");
 
 /// The full names (subsection/.../entry) of the entries @p declare declares.
-std::vector<std::string>
+std::set<std::string>
 entries(const std::function<void(ParameterHandler &)> &declare)
 {
   ParameterHandler prm;
   declare(prm);
-  std::ostringstream text;
-  prm.print_parameters(text, ParameterHandler::ShortPRM);
-  std::istringstream       in(text.str());
-  std::vector<std::string> path, names;
-  for (std::string line; std::getline(in, line);)
-    {
-      line = Utilities::trim(line);
-      if (line.rfind("subsection ", 0) == 0)
-        path.push_back(Utilities::trim(line.substr(11)));
-      else if (line == "end" && !path.empty())
-        path.pop_back();
-      else if (line.rfind("set ", 0) == 0)
-        {
-          std::string name;
-          for (const auto &p : path)
-            name += p + "/";
-          names.push_back(name +
-                          Utilities::trim(line.substr(4, line.find('=') - 4)));
-        }
-    }
-  return names;
+  return declared_entries(prm);
 }
 
 std::string

@@ -154,35 +154,37 @@ namespace dyncontact
 
 
 
+  std::set<std::string>
+  declared_entries(const ParameterHandler &prm)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::ShortPRM);
+    std::istringstream       in(text.str());
+    std::vector<std::string> path;
+    std::set<std::string>    names;
+    for (std::string line; std::getline(in, line);)
+      {
+        line = Utilities::trim(line);
+        if (line.rfind("subsection ", 0) == 0)
+          path.push_back(Utilities::trim(line.substr(11)));
+        else if (line == "end" && !path.empty())
+          path.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+          {
+            std::string name;
+            for (const auto &p : path)
+              name += p + "/";
+            names.insert(name +
+                         Utilities::trim(line.substr(4, line.find('=') - 4)));
+          }
+      }
+    return names;
+  }
+
+
+
   namespace
   {
-    /// The full names (subsection/.../entry) of every declared entry.
-    std::set<std::string>
-    declared_entries(const ParameterHandler &prm)
-    {
-      std::ostringstream text;
-      prm.print_parameters(text, ParameterHandler::ShortPRM);
-      std::istringstream       in(text.str());
-      std::vector<std::string> path;
-      std::set<std::string>    names;
-      for (std::string line; std::getline(in, line);)
-        {
-          line = Utilities::trim(line);
-          if (line.rfind("subsection ", 0) == 0)
-            path.push_back(Utilities::trim(line.substr(11)));
-          else if (line == "end" && !path.empty())
-            path.pop_back();
-          else if (line.rfind("set ", 0) == 0)
-            {
-              std::string name;
-              for (const auto &p : path)
-                name += p + "/";
-              names.insert(name +
-                           Utilities::trim(line.substr(4, line.find('=') - 4)));
-            }
-        }
-      return names;
-    }
 
 
 
@@ -279,7 +281,13 @@ namespace dyncontact
                         full.substr(0, full.size() - name.size() - 1);
       if (candidates.empty())
         return; // the parser's own message names the entry
-      AssertThrow(!(path.size() == 1 && path[0] == "Scene"),
+      // (an entry of the flat layout of subsection Scene before each scene
+      // had its own)
+      const bool flat_scene =
+        path.size() == 1 && path[0] == "Scene" &&
+        (name == "Slave side" || name == "Search radius" ||
+         candidates.find("Scene/") != std::string::npos);
+      AssertThrow(!flat_scene,
                   ExcMessage(at + "'Scene/" + entry +
                              "' has moved: each scene reads its own "
                              "subsection now. Set '" +
@@ -316,7 +324,15 @@ namespace dyncontact
           line.erase(hash);
         line = Utilities::trim(line);
         if (line.rfind("subsection ", 0) == 0)
-          path.push_back(Utilities::trim(line.substr(11)));
+          {
+            path.push_back(Utilities::trim(line.substr(11)));
+            AssertThrow(path.back().find('/') == std::string::npos,
+                        ExcMessage("Line " + std::to_string(line_number) +
+                                   " of '" + source + "': 'subsection " +
+                                   path.back() +
+                                   "': a subsection name has no '/'; nest "
+                                   "one subsection in the other."));
+          }
         else if (line == "end" && !path.empty())
           path.pop_back();
         else if (line.rfind("set ", 0) == 0 &&

@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <dyncontact/base/input_checks.h>
 #include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/core/parameter_file.h>
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
@@ -20,21 +20,6 @@
 
 namespace dyncontact
 {
-  namespace
-  {
-    /// The values of the subsection(s) @p P owns.
-    template <class P>
-    P
-    parsed(ParameterHandler &prm)
-    {
-      P parameters;
-      parameters.parse_parameters(prm);
-      return parameters;
-    }
-  } // namespace
-
-
-
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &input_directory,
@@ -59,16 +44,11 @@ namespace dyncontact
                                           control.get_end_time());
     // adaptive steps end at the output times (fixed ones output at the
     // first step at or after each)
-    if (output.output_interval > 0.)
-      time_step_controller.stop_at_multiples_of(output.output_interval);
+    time_step_controller.stop_at_multiples_of(output.output_interval);
+    const typename SemiDiscreteSystem<dim>::Parameters system = {
+      parameters.degree, time_integration.lumped_mass};
     problem = std::make_unique<DiscreteProblem<dim>>(
-      prm,
-      scheme,
-      typename SemiDiscreteSystem<dim>::Parameters{
-        parameters.degree, time_integration.lumped_mass},
-      time_step_controller,
-      pcout,
-      comm);
+      prm, scheme, system, time_step_controller, pcout, comm);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
     vtu_writer = std::make_unique<VtuWriter<dim>>();
@@ -174,12 +154,6 @@ namespace dyncontact
       vectors.push_back(&v);
     p.get_system().deserialize(vectors);
     control.load(state);
-    AssertThrow(control.get_end_time() > control.get_time(),
-                ExcMessage("Time integration/End time = " +
-                           format_number(control.get_end_time()) +
-                           " s is not after the checkpoint's time t = " +
-                           format_number(control.get_time()) +
-                           " s: a resumed run needs a later End time."));
     time_step_controller.load(state,
                               p.get_contact().get_rows(),
                               flags,

@@ -17,7 +17,12 @@ namespace dyncontact
                       "step): VTU files are written then (if Write vtu), and "
                       "the energy-norm error is integrated then (with "
                       "Postprocess/Error energy norm/Interval = output times). "
-                      "statistics.tsv gets every step.");
+                      "statistics.tsv gets every step. Fixed time steps: at "
+                      "the first step at or after each output time; adaptive "
+                      "ones end at the output times, except one nearer than "
+                      "the Minimum time step to a step's start or followed "
+                      "within a step by a contact event (then as with fixed "
+                      "steps).");
     prm.declare_entry("Progress interval",
                       "10",
                       Patterns::Double(0.),

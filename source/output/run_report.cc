@@ -116,6 +116,7 @@ namespace dyncontact
     input.adaptive_time_steps = time_step_controller.is_adaptive();
     input.located_events      = time_step_controller.n_located_events();
     input.repeated_steps      = time_step_controller.n_repeated_steps();
+    input.passed_output_times = time_step_controller.n_passed_output_times();
     input.step_matrices       = step_matrices;
     input.uses_amg            = integrator.uses_amg();
     input.condition_bound     = integrator.condition_bound();

@@ -32,8 +32,12 @@ namespace dyncontact
             << *std::max_element(tau.begin() + 1, tau.end()) << " s, "
             << input.located_events << " steps shortened to a contact event, "
             << input.repeated_steps
-            << " steps repeated for the error estimate, " << input.step_matrices
-            << " step matrices S built\n";
+            << " steps repeated for the error estimate, "
+            << (input.passed_output_times > 0 ?
+                  std::to_string(input.passed_output_times) +
+                    " output times passed for a contact event, " :
+                  std::string())
+            << input.step_matrices << " step matrices S built\n";
       }
 
     out << statistics_lines;

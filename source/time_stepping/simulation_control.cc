@@ -119,6 +119,12 @@ namespace dyncontact
     time        = checkpoint_number(state, "time", "time t (s)", 0., largest);
     next_output = checkpoint_number(
       state, "next_output", "next output time (s)", 0., largest);
+    AssertThrow(end_time > time,
+                ExcMessage(
+                  "Time integration/End time = " + format_number(end_time) +
+                  " s is not after the checkpoint's time t = " +
+                  format_number(time) +
+                  " s: a resumed run needs a later End time."));
     // t = t_base + k tau from here on
     time_base   = time;
     steps_since = 0;

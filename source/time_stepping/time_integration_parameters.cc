@@ -52,7 +52,8 @@ namespace dyncontact
       "Time step tolerance is repeated with tau/2, tau doubles after two "
       "steps below 1/8 of it; a step that would bring a contact row into "
       "contact (or release one) is shortened to end at the predicted "
-      "moment of that event, and the last step ends at End time. Not used "
+      "moment of that event; steps also end at the output and reference "
+      "times (see Output/Output interval) and at End time. Not used "
       "by the static scheme.");
     prm.declare_entry(
       "Event location",

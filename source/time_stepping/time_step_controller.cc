@@ -90,8 +90,8 @@ namespace dyncontact
   void
   TimeStepController::stop_at_multiples_of(const double interval)
   {
-    Assert(interval > 0., ExcInternalError());
-    stop_intervals.emplace_back(interval, false);
+    if (interval > 0.)
+      stop_intervals.emplace_back(interval, false);
   }
 
 
@@ -149,10 +149,13 @@ namespace dyncontact
         {
           // the next multiple of the interval after the step's start (a
           // start within 1e-6 intervals of a multiple is at it); a step that
-          // ends there up to round-off is not shortened
+          // ends there up to round-off is not shortened, nor one that would
+          // be shorter than the Minimum time step for an optional time
+          // (which is then passed)
           const double stop =
             (std::floor(step_start / interval + 1e-6) + 1.) * interval;
-          if (step_start + tau > stop + 1e-9 * tau)
+          if (step_start + tau > stop + 1e-9 * tau &&
+              (required || stop - step_start >= min_time_step))
             {
               shorten(stop - step_start);
               ends_at =
@@ -226,8 +229,9 @@ namespace dyncontact
         if (beyond && ends_at == EndsAt::optional_time)
           {
             pass_optional_times = true;
-            tau                 = uncut_tau;
-            tau_changed         = uncut_tau_changed;
+            ++passed_output_times;
+            tau         = uncut_tau;
+            tau_changed = uncut_tau_changed;
             return Verdict::retry;
           }
         // not below the Minimum time step
@@ -240,12 +244,22 @@ namespace dyncontact
           }
       }
     const double eta = estimator.estimate(operators, udot_old, udot, tau);
-    // a level step above the tolerance is repeated with tau/2
-    if (eta > tolerance && !step_is_shortened() && halve())
+    // a step above the tolerance (but one that ends at a located event) is
+    // repeated with the largest level below its tau: tau/2 for a level
+    // step; a step cut to end at a given time is shorter than its level
+    if (eta > tolerance && !event_located)
       {
-        event_located = false;
-        ++estimator.repeated_steps;
-        return Verdict::retry;
+        double level = tau_level / 2.;
+        while (level >= tau * (1. - 1e-12))
+          level /= 2.;
+        if (level >= min_time_step * (1. - 1e-12))
+          {
+            tau_level   = level;
+            tau         = level;
+            tau_changed = true;
+            ++estimator.repeated_steps;
+            return Verdict::retry;
+          }
       }
     trial.error_estimate = eta;
     may_grow = estimator.accept(udot_old, udot, tau, eta, tolerance) &&
@@ -330,8 +344,9 @@ namespace dyncontact
       s << std::setprecision(17) << x;
       return s.str();
     };
-    state["tau"]       = exact(tau);
-    state["tau_level"] = exact(tau_level);
+    state["tau"]                 = exact(tau);
+    state["tau_level"]           = exact(tau_level);
+    state["passed_output_times"] = std::to_string(passed_output_times);
     estimator.save(state);
     if (!adaptive)
       return {};
@@ -379,13 +394,20 @@ namespace dyncontact
     const double smallest = std::numeric_limits<double>::min();
     tau =
       checkpoint_number(state, "tau", "time step tau (s)", smallest, largest);
-    tau_level = state.count("tau_level") ?
-                  checkpoint_number(state,
+    tau_level           = state.count("tau_level") ?
+                            checkpoint_number(state,
                                     "tau_level",
                                     "time step level (s)",
                                     smallest,
                                     largest) :
-                  tau;
+                            tau;
+    passed_output_times = state.count("passed_output_times") ?
+                            checkpoint_number(state,
+                                              "passed_output_times",
+                                              "passed output times",
+                                              0.,
+                                              4e9) :
+                            0;
     // t = t_base + k tau is counted from the checkpoint's time
     tau_changed = true;
     reset(rows.size());

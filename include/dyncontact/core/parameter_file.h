@@ -2,6 +2,7 @@
 #define dyncontact_core_parameter_file_h
 
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,17 @@ namespace dyncontact
     std::function<void(dealii::ParameterHandler &)> declare_parameters;
   };
 
+  /// The values of the subsections that @p Owner owns (a struct with
+  /// parse_parameters(ParameterHandler &)), read from @p prm.
+  template <class Owner>
+  Owner
+  parsed(dealii::ParameterHandler &prm)
+  {
+    Owner values;
+    values.parse_parameters(prm);
+    return values;
+  }
+
   /// Every owner of parameters, in the order of declaration.
   const std::vector<ParameterOwner> &
   parameter_owners();
@@ -32,6 +44,11 @@ namespace dyncontact
   /// Declares every parameter of the program (all owners, with plugins).
   void
   declare_all_parameters(dealii::ParameterHandler &prm);
+
+  /// The full names (subsection/.../entry) of every entry declared in
+  /// @p prm.
+  std::set<std::string>
+  declared_entries(const dealii::ParameterHandler &prm);
 
   /**
    * Stops with a clear message if the prm text @p text sets an entry in a

@@ -41,8 +41,8 @@ namespace dyncontact
    * - MeshAdaptor: when and where the mesh adapts (criteria are plugins);
    * - VtuWriter, ReferenceStates, Checkpoints, RunReport: output.
    *
-   * Components read the state through SimulatorAccess; each declares its own
-   * parameters (declare_all_parameters() collects them).
+   * Components read the state through SimulatorAccess; each subsection of
+   * the prm has one owner (parameter_owners()).
    */
   template <int dim>
   class Simulator
@@ -91,7 +91,6 @@ namespace dyncontact
     ConditionalOStream           pcout;
     std::unique_ptr<TimerOutput> timer;
 
-    /// subsection Time integration
     TimeIntegrationParameters time_integration;
     /// tau (declared before the control, which reads it)
     TimeStepController                    time_step_controller;

@@ -26,6 +26,7 @@ namespace dyncontact
     bool         adaptive_time_steps = false;
     unsigned int located_events      = 0;
     unsigned int repeated_steps      = 0;
+    unsigned int passed_output_times = 0;
     unsigned int step_matrices       = 0;
     /// CG's preconditioner for the last step matrix (static: for A): AMG,
     /// else Jacobi, and for Jacobi the bound of the condition number of S

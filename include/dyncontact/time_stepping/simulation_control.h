@@ -103,7 +103,8 @@ namespace dyncontact
       return is_static;
     }
 
-    /// The state a resumed run needs (step, time, next output).
+    /// The state a resumed run needs (step, time, next output); load()
+    /// refuses an End time that is not after the checkpoint's time.
     void
     save(std::map<std::string, std::string> &state) const;
     void

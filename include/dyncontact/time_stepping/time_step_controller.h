@@ -86,7 +86,7 @@ namespace dyncontact
     reset(const std::size_t n_rows);
 
     /// The adaptive control ends a step at every multiple of @p interval
-    /// (> 0) that it would pass (the output times), except where a contact
+    /// (0: none) that it would pass (the output times), except where a contact
     /// event lies within the step after that time (N-CS++'s projection
     /// would see it from there): then the step takes its level, and the
     /// time is passed. Fixed steps do not change.
@@ -183,6 +183,14 @@ namespace dyncontact
       return estimator.repeated_steps;
     }
 
+    /// Output times passed because a contact event followed (each costs a
+    /// trial step).
+    unsigned int
+    n_passed_output_times() const
+    {
+      return passed_output_times;
+    }
+
     /**
      * tau, its level and the estimator's scalars into @p state. With the
      * adaptive control also each row's state (+4 at its eliminated DoF of
@@ -251,7 +259,9 @@ namespace dyncontact
     double uncut_tau         = 0.;
     bool   uncut_tau_changed = false;
     /// Optional times are passed in the present step.
-    bool          pass_optional_times = false;
+    bool pass_optional_times = false;
+    /// n_passed_output_times()
+    unsigned int  passed_output_times = 0;
     EventLocation event_location      = EventLocation::onset_and_separation;
 
     // state
