@@ -10,8 +10,6 @@
 // energy scale
 // gets a warning with the step, the size and the remedy.
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/postprocess/interface.h>

@@ -9,11 +9,6 @@
 #include <utility>
 #include <vector>
 
-namespace dealii
-{
-  class ParameterHandler;
-}
-
 namespace dyncontact
 {
   /**
