@@ -13,18 +13,23 @@ Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/hertz_impact.py [build/dyncontact] [ranks] [levels] [taus]
         [schemes] [prm]
 e.g. benchmarks/hertz_impact.py build/dyncontact 2 4,5 0.02,0.01
+A level is the adaptive mesh's finest level (an integer), or a fixed mesh
+gGzZ[pP]: G global refinements, Z refinements of the scene's contact zone
+(Scene/Ball on block/Contact zone refinements, sized from Hertz's impact),
+polynomial degree P (1 if not given), e.g. g1z3,g2z2,g1z2p2.
 (prm: another version of prm/ball_drop_adaptive.prm, e.g. a larger block;
 the formulas assume its E, nu and v)."""
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 import time
 
 executable = sys.argv[1] if len(sys.argv) > 1 else "build/dyncontact"
 ranks = int(sys.argv[2]) if len(sys.argv) > 2 else 1
-levels = [int(x) for x in (sys.argv[3] if len(sys.argv) > 3 else "4").split(",")]
+levels = (sys.argv[3] if len(sys.argv) > 3 else "4").split(",")
 taus = [float(x) for x in (sys.argv[4] if len(sys.argv) > 4 else "0.02").split(",")]
 schemes = sys.argv[5].split(",") if len(sys.argv) > 5 else ["N-CI", "N-CS", "N-CS++"]
 os.makedirs("results-hertz-impact", exist_ok=True)
@@ -38,14 +43,25 @@ print("|---|---|---|---|---|---|---|---|---|")
 for level in levels:
     for tau in taus:
         for scheme in schemes:
-            name = "%s-%d-%g" % (scheme, level, tau)
+            name = "%s-%s-%g" % (scheme, level, tau)
             prm = "results-hertz-impact/%s.prm" % name
+            fixed = re.fullmatch(r"g(\d+)z(\d+)(?:p(\d+))?", level)
             with open(prm, "w") as f:
                 f.write(base)
                 f.write("\nset Output directory = results-hertz-impact/%s\n" % name)
                 f.write("subsection Output\n  set Write vtu = false\nend\n")
-                f.write("subsection Mesh refinement\n  set Maximum level = %d\n"
-                        "  set Initial contact refinements = %d\nend\n" % (level, level - 1))
+                if fixed:
+                    f.write("set Polynomial degree = %s\n" % (fixed.group(3) or "1"))
+                    f.write("subsection Mesh\n  set Initial global refinements = %s\nend\n"
+                            "subsection Mesh refinement\n  set Refinement interval = 0\n"
+                            "  set Initial contact refinements = 0\nend\n"
+                            "subsection Scene\n  subsection Ball on block\n"
+                            "    set Contact zone refinements = %s\n  end\nend\n"
+                            % (fixed.group(1), fixed.group(2)))
+                else:
+                    f.write("subsection Mesh refinement\n  set Maximum level = %d\n"
+                            "  set Initial contact refinements = %d\nend\n"
+                            % (int(level), int(level) - 1))
                 f.write("subsection Time integration\n  set Scheme = %s\n"
                         "  set Time step = %g\nend\n" % (scheme, tau))
             command = [executable, prm]
@@ -71,6 +87,6 @@ for level in levels:
             rebound = (float(last["momentum_y"]) - float(last["momentum_y_body2"])) / (m / 4)
             vibration = (float(last["energy_total"]) - 0.5 * (m / 4) * rebound ** 2) / E0
             dofs = sum(float(r["dofs"]) for r in rows) / len(rows)
-            print("| %s | %d | %g | %.0f | %.3f | %.3f | %.4f | %.2f | %.0f |"
+            print("| %s | %s | %g | %.0f | %.3f | %.3f | %.4f | %.2f | %.0f |"
                   % (scheme, level, tau, dofs, duration / t_c, force / F_max,
                      rebound, 100 * vibration, wall), flush=True)

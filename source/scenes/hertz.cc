@@ -8,6 +8,7 @@
 #include <dyncontact/base/memory_check.h>
 #include <dyncontact/scenes/hertz.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dyncontact
@@ -59,10 +60,12 @@ namespace dyncontact
     prm.declare_entry("Contact zone refinements",
                       "3",
                       Patterns::Integer(0, 10),
-                      "How often the cells within 2.5 "
-                      "times Hertz's contact size (plus the initial gap) of "
-                      "the first contact point are refined after the global "
-                      "refinements.");
+                      "How often the cells near the first contact point are "
+                      "refined after the global refinements: within the "
+                      "initial gap plus 2.5 times Hertz's static contact "
+                      "size under the Load, or 1.5 times the largest "
+                      "contact size of Hertz's impact at the Drop velocity, "
+                      "if larger.");
     prm.declare_entry(
       "Extra refinements of the curved body",
       "0",
@@ -173,6 +176,43 @@ namespace dyncontact
     if (dim == 2)
       return std::sqrt(4. * load * radius / (M_PI * E));
     return std::cbrt(3. * load * radius / (4. * E));
+  }
+
+
+
+  template <int dim>
+  double
+  HertzScene<dim>::impact_contact_size() const
+  {
+    const double E      = effective_modulus();
+    const double rho    = this->material(0).density;
+    const double mass   = (dim == 2) ? 0.5 * M_PI * radius * radius * rho :
+                                       2. / 3. * M_PI * std::pow(radius, 3) * rho;
+    const double energy = 0.5 * mass * drop_velocity * drop_velocity;
+    // stored energy less the load's work over the indentation, for the
+    // contact size s: increasing where it matters, negative at s -> 0
+    const auto balance = [&](const double s) {
+      if (dim == 3)
+        {
+          const double alpha = s * s / radius;
+          return 8. / 15. * E * std::sqrt(radius) * std::pow(alpha, 2.5) -
+                 load * alpha - energy;
+        }
+      const double force    = M_PI * E * s * s / (4. * radius);
+      const double log_term = 2. * std::log(4. * radius / s);
+      const double alpha    = force / (M_PI * E) * (log_term - 1.);
+      return force * force / (2. * M_PI * E) * (log_term - 1.5) - load * alpha -
+             energy;
+    };
+    if (energy <= 0. || balance(radius) <= 0.)
+      return energy <= 0. ? 0. : radius;
+    double low = 0., high = radius;
+    for (unsigned int i = 0; i < 60; ++i)
+      {
+        const double middle                 = 0.5 * (low + high);
+        (balance(middle) > 0. ? high : low) = middle;
+      }
+    return high;
   }
 
 
@@ -309,9 +349,12 @@ namespace dyncontact
   void
   HertzScene<dim>::refine_initial_mesh(Triangulation<dim, dim> &tria) const
   {
-    // refine towards the first contact point (the origin) within 2.5 times
-    // Hertz's contact size
-    const double zone = 2.5 * hertz_contact_size() + initial_gap;
+    // refine towards the first contact point (the origin): within 2.5
+    // times Hertz's static contact size under the load, and within 1.5
+    // times the largest contact size of a drop
+    const double zone =
+      std::max(2.5 * hertz_contact_size(), 1.5 * impact_contact_size()) +
+      initial_gap;
     // (both bodies, then the curved body alone its extra times)
     for (unsigned int k = 0; k < contact_refinements + extra_refinements; ++k)
       {

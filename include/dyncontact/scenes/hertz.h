@@ -69,6 +69,21 @@ namespace dyncontact
     double
     hertz_contact_size() const;
 
+    /// The contact half-width (2D) or radius (3D) at the largest
+    /// indentation of the drop, in m, from the energy balance of Hertz's
+    /// quasi-static impact: the kinetic energy of the whole half cylinder
+    /// or half ball at the Drop velocity and the load's work over the
+    /// indentation are stored in Hertz's contact (the load's work over the
+    /// initial gap is left out, so that a static run sizes nothing from
+    /// it); 0 without a Drop velocity. 3D: the work of
+    /// F = 4/3 E* sqrt(R) alpha^(3/2); 2D: of a force P with half-width
+    /// b = sqrt(4 P R / (pi E*)) and indentation
+    /// alpha = P / (pi E*) (2 ln(4R/b) - 1) (a cylinder on a half-space,
+    /// an estimate: the 2D indentation depends on the bodies' size). At
+    /// most the radius R.
+    double
+    impact_contact_size() const;
+
     /// Hertz's pressure p0 sqrt(1 - r^2/a^2) at the distance r of @p x from
     /// the axis through the first contact point (|x_0| in 2D,
     /// sqrt(x_0^2 + x_2^2) in 3D), with p0 = 2P/(pi b) (2D) or
