@@ -35,7 +35,7 @@ install() {
 build_packages=($(missing libdeal.ii-dev ninja-build openmpi-bin numdiff))
 test_packages=()
 if [ "${1:-}" = "--tests" ]; then
-  test_packages=($(missing perl python3 python3-matplotlib
+  test_packages=($(missing perl python3 python3-matplotlib \
                            paraview python3-paraview xvfb xauth))
 fi
 [ ${#build_packages[@]} -eq 0 ] || install "${build_packages[@]}"
