@@ -21,21 +21,16 @@
 #include <dyncontact/scenes/interface.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 
-using namespace dyncontact;
+#include "tests.h"
 
-std::ofstream out("output");
+using namespace dyncontact;
+using testing::check;
+using testing::log;
 
 namespace
 {
-  std::string
-  verdict(const bool ok)
-  {
-    return ok ? "OK" : "FAILED";
-  }
-
   // 2D: the force whose work over the indentation equals the energy
   double
   cylinder_force(const double energy, const double E, const double R)
@@ -66,7 +61,7 @@ namespace
 
 template <int dim>
 double
-check(const double drop_velocity)
+check_zone(const double drop_velocity)
 {
   const double      R = 1., v = drop_velocity, g0 = 0.01, nu = 0.3;
   const double      E    = (dim == 2) ? 1. : 100.;
@@ -101,11 +96,11 @@ check(const double drop_velocity)
     expected =
       std::sqrt(4. * cylinder_force(energy, E_star, R) * R / (M_PI * E_star));
   const double size = hertz.impact_contact_size();
-  out << std::fixed << std::setprecision(1) << dim << "D, v = " << v
-      << " m/s: impact contact size " << std::setprecision(4) << size
-      << " m, computed here " << expected
-      << " m: " << verdict(std::abs(size - expected) <= 1e-4 * (1. + expected))
-      << "\n";
+  log() << std::fixed << std::setprecision(1) << dim << "D, v = " << v
+        << " m/s: impact contact size " << std::setprecision(4) << size
+        << " m, computed here " << expected
+        << " m: " << check(std::abs(size - expected) <= 1e-4 * (1. + expected))
+        << "\n";
 
   parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
   build_mesh(*scene, triangulation, 2, 1, false);
@@ -120,10 +115,10 @@ check(const double drop_velocity)
       }
   const double zone = 1.5 * expected + g0;
   if (v > 0.)
-    out << "  refined cells reach " << std::setprecision(2) << reach
-        << " m, zone 1.5 a + g0 = " << zone
-        << " m: " << verdict(reach >= 0.8 * zone && reach <= zone + coarse)
-        << "\n";
+    log() << "  refined cells reach " << std::setprecision(2) << reach
+          << " m, zone 1.5 a + g0 = " << zone
+          << " m: " << check(reach >= 0.8 * zone && reach <= zone + coarse)
+          << "\n";
   return reach;
 }
 
@@ -133,14 +128,14 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // without a drop velocity the zone is the static one (zero without a
   // load): the cells at the first contact point
-  const double reach_2d = check<2>(0.1), static_2d = check<2>(0.);
-  out << "  without a drop the refined cells reach " << std::setprecision(2)
-      << static_2d
-      << " m: less than half as far: " << verdict(static_2d < 0.5 * reach_2d)
-      << "\n";
-  const double reach_3d = check<3>(0.1), static_3d = check<3>(0.);
-  out << "  without a drop the refined cells reach " << std::setprecision(2)
-      << static_3d
-      << " m: less than half as far: " << verdict(static_3d < 0.5 * reach_3d)
-      << "\n";
+  const double reach_2d = check_zone<2>(0.1), static_2d = check_zone<2>(0.);
+  log() << "  without a drop the refined cells reach " << std::setprecision(2)
+        << static_2d
+        << " m: less than half as far: " << check(static_2d < 0.5 * reach_2d)
+        << "\n";
+  const double reach_3d = check_zone<3>(0.1), static_3d = check_zone<3>(0.);
+  log() << "  without a drop the refined cells reach " << std::setprecision(2)
+        << static_3d
+        << " m: less than half as far: " << check(static_3d < 0.5 * reach_3d)
+        << "\n";
 }

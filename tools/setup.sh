@@ -22,7 +22,7 @@ missing() {
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 updated=false
-install() {
+install_packages() {
   echo "Installing: $*"
   if [ "$updated" = false ]; then
     $SUDO apt-get update -q
@@ -38,13 +38,13 @@ if [ "${1:-}" = "--tests" ]; then
   test_packages=($(missing perl python3 python3-matplotlib \
                            paraview python3-paraview xvfb xauth))
 fi
-[ ${#build_packages[@]} -eq 0 ] || install "${build_packages[@]}"
+[ ${#build_packages[@]} -eq 0 ] || install_packages "${build_packages[@]}"
 
 # the test packages (ParaView is most of the download) while the build runs
 mkdir -p build
 installer=""
 if [ ${#test_packages[@]} -gt 0 ]; then
-  install "${test_packages[@]}" > build/install-test-packages.log 2>&1 &
+  install_packages "${test_packages[@]}" > build/install-test-packages.log 2>&1 &
   installer=$!
   echo "Installing the test packages in the background (build/install-test-packages.log)"
 fi

@@ -204,8 +204,10 @@ namespace dyncontact
       return force * force / (2. * M_PI * E) * (log_term - 1.5) - load * alpha -
              energy;
     };
-    if (energy <= 0. || balance(radius) <= 0.)
-      return energy <= 0. ? 0. : radius;
+    if (energy <= 0.)
+      return 0.;
+    if (balance(radius) <= 0.)
+      return radius;
     double low = 0., high = radius;
     for (unsigned int i = 0; i < 60; ++i)
       {
