@@ -243,6 +243,19 @@ namespace dyncontact
     VectorType &residual = scratch.residual;
     vmult_H(residual, v);
     residual.sadd(-1., 1., r);
+    // the force at a slave node in the equations of the free DoFs, which
+    // the solve makes hold: a hanging node's residual belongs, times its
+    // weight, to the nodes it hangs on (T^T of the hanging-node
+    // constraints), and those may be slave nodes. Without it a row beside
+    // a hanging node got a multiplier of the wrong sign, and the active
+    // set cycled (2D bar on an adaptive mesh at the release)
+    additions = 0.;
+    for (const auto &line : mesh_constraints.get_lines())
+      if (!line.entries.empty() && locally_owned.is_element(line.index))
+        for (const auto &entry : line.entries)
+          additions(entry.first) += entry.second * residual(line.index);
+    additions.compress(VectorOperation::add);
+    residual += additions;
     const VectorType &ghosted = row_operator.with_row_ghosts(residual);
     for (unsigned int p = 0; p < rows->size(); ++p)
       {
