@@ -132,6 +132,12 @@ main(int argc, char **argv)
     std::ofstream("deep" + std::to_string(k) + ".prm")
       << "include deep" << k + 1 << ".prm\n";
   std::ofstream("deep40.prm") << "\n";
+  std::ofstream("included_value.prm")
+    << "# a value out of range, in an included file\n"
+    << "subsection Time integration\n  set Time step = -1\nend\n";
+  std::ofstream("included_entry.prm")
+    << "# an entry that does not exist, in an included file\n\n"
+    << "set Tme step = 1\n";
   fs::create_directories("a_directory.prm");
   fs::create_directories("a_directory.msh");
   std::ofstream("empty.msh");
@@ -219,6 +225,15 @@ main(int argc, char **argv)
          "include deep0.prm\n",
          "more than 32 nested"},
     {"include", "include without a name", "include \n", "needs a file name"},
+    // messages name the included file's own line, not the expanded text's
+    {"include",
+         "a bad value in an included file",
+         "include included_value.prm\n",
+         "Line 3 of 'included_value.prm'"},
+    {"include",
+         "an unknown entry in an included file",
+         "include included_entry.prm\n",
+         "Line 3 of 'included_entry.prm'"},
     // Gmsh meshes
     {"gmsh", "triangles", gmsh("triangle.msh"), "triangles"},
     {"gmsh", "prisms", gmsh("prism.msh"), "prisms"},

@@ -28,7 +28,8 @@ namespace dyncontact
     expand_includes(const std::string        &text,
                     const std::string        &source,
                     std::vector<std::string> &chain,
-                    std::vector<std::string> &chain_lines)
+                    std::vector<std::string> &chain_lines,
+                    std::vector<std::string> &origins)
     {
       std::string body = text;
       if (body.rfind("\xEF\xBB\xBF", 0) == 0)
@@ -44,6 +45,8 @@ namespace dyncontact
               line.compare(first, 8, "include ") != 0)
             {
               out << line << "\n";
+              origins.push_back("Line " + std::to_string(line_number) +
+                                " of '" + source + "'");
               continue;
             }
           std::string name = line.substr(first + 8);
@@ -93,10 +96,8 @@ namespace dyncontact
           included << file.rdbuf();
           chain_lines.push_back(std::to_string(line_number));
           chain.push_back(canonical);
-          out << expand_includes(included.str(),
-                                 path.string(),
-                                 chain,
-                                 chain_lines);
+          out << expand_includes(
+            included.str(), path.string(), chain, chain_lines, origins);
           chain.pop_back();
           chain_lines.pop_back();
         }
@@ -107,13 +108,46 @@ namespace dyncontact
 
 
   std::string
-  expand_includes(const std::string &text, const std::string &source)
+  expand_includes(const std::string        &text,
+                  const std::string        &source,
+                  std::vector<std::string> &origins)
   {
     std::error_code          error;
     std::vector<std::string> chain = {
       std::filesystem::weakly_canonical(source, error).string()};
     std::vector<std::string> chain_lines;
-    return expand_includes(text, source, chain, chain_lines);
+    origins.clear();
+    return expand_includes(text, source, chain, chain_lines, origins);
+  }
+
+
+
+  std::string
+  with_origin(const std::string              &message,
+              const std::string              &source,
+              const std::vector<std::string> &origins)
+  {
+    // deal.II's parser: "Line <N> of file <source>" (one of its messages
+    // lacks the last '>')
+    const std::string head = "Line <", tail = "> of file <" + source;
+    const auto        begin = message.find(head);
+    if (begin == std::string::npos)
+      return message;
+    const auto end = message.find(tail, begin);
+    if (end == std::string::npos)
+      return message;
+    const std::size_t after =
+      end + tail.size() +
+      (message.compare(end + tail.size(), 1, ">") == 0 ? 1 : 0);
+    const std::string number =
+      message.substr(begin + head.size(), end - begin - head.size());
+    if (number.empty() ||
+        number.find_first_not_of("0123456789") != std::string::npos)
+      return message;
+    const unsigned long n = std::stoul(number);
+    if (n == 0 || n > origins.size())
+      return message;
+    return message.substr(0, begin) + origins[n - 1] + message.substr(after);
   }
 
 
@@ -306,8 +340,9 @@ namespace dyncontact
 
 
   void
-  check_for_misplaced_entries(const std::string &text,
-                              const std::string &source)
+  check_for_misplaced_entries(const std::string              &text,
+                              const std::string              &source,
+                              const std::vector<std::string> &origins)
   {
     ParameterHandler prm;
     declare_all_parameters(prm);
@@ -319,6 +354,11 @@ namespace dyncontact
     for (std::string line; std::getline(in, line);)
       {
         ++line_number;
+        // where the line came from (an included file's own line)
+        const std::string origin =
+          line_number <= origins.size() ?
+            origins[line_number - 1] :
+            "Line " + std::to_string(line_number) + " of '" + source + "'";
         const auto hash = line.find('#');
         if (hash != std::string::npos)
           line.erase(hash);
@@ -327,9 +367,7 @@ namespace dyncontact
           {
             path.push_back(Utilities::trim(line.substr(11)));
             AssertThrow(path.back().find('/') == std::string::npos,
-                        ExcMessage("Line " + std::to_string(line_number) +
-                                   " of '" + source + "': 'subsection " +
-                                   path.back() +
+                        ExcMessage(origin + ": 'subsection " + path.back() +
                                    "': a subsection name has no '/'; nest "
                                    "one subsection in the other."));
           }
@@ -343,8 +381,7 @@ namespace dyncontact
             std::string where;
             for (const auto &p : path)
               where += p + "/";
-            const std::string at =
-              "Line " + std::to_string(line_number) + " of '" + source + "': ";
+            const std::string at = origin + ": ";
             if (declared.count(where + entry))
               {
                 // a value continued on the next line is left to the parser

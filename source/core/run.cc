@@ -17,12 +17,22 @@ namespace dyncontact
                  const MPI_Comm     comm,
                  const std::string &source)
   {
-    const std::string text = expand_includes(prm_text, source);
-    check_for_misplaced_entries(text, source);
+    std::vector<std::string> origins;
+    const std::string        text = expand_includes(prm_text, source, origins);
+    check_for_misplaced_entries(text, source, origins);
     ParameterHandler prm;
     declare_all_parameters(prm);
     std::istringstream in(text);
-    prm.parse_input(in, source);
+    try
+      {
+        prm.parse_input(in, source);
+      }
+    catch (const ExceptionBase &e)
+      {
+        // the line in the file the user wrote, not in the expanded text
+        AssertThrow(false,
+                    ExcMessage(with_origin(message_of(e), source, origins)));
+      }
 
     std::string input_directory;
     if (std::filesystem::exists(source))

@@ -62,8 +62,9 @@ namespace dyncontact
    * before the text is parsed.
    */
   void
-  check_for_misplaced_entries(const std::string &text,
-                              const std::string &source);
+  check_for_misplaced_entries(const std::string              &text,
+                              const std::string              &source,
+                              const std::vector<std::string> &origins);
 
   /**
    * The prm text @p text (read from @p source) with a leading UTF-8 byte
@@ -72,10 +73,24 @@ namespace dyncontact
    * the including file, else to the working directory, as deal.II's
    * ParameterHandler reads it). A file that includes itself, directly or
    * through others, a missing include file, or more than 32 nested levels
-   * stop with a message naming the files and lines.
+   * stop with a message naming the files and lines. @p origins gets, for
+   * each line of the result, where it came from ("Line 3 of 'inc.prm'"),
+   * for the messages about it.
    */
   std::string
-  expand_includes(const std::string &text, const std::string &source);
+  expand_includes(const std::string        &text,
+                  const std::string        &source,
+                  std::vector<std::string> &origins);
+
+  /**
+   * @p message of deal.II's parser about line N of the expanded text of
+   * @p source ("Line <N> of file <source>") with the line's origin in its
+   * place (an included file's own line); other messages unchanged.
+   */
+  std::string
+  with_origin(const std::string              &message,
+              const std::string              &source,
+              const std::vector<std::string> &origins);
 } // namespace dyncontact
 
 #endif
