@@ -126,6 +126,7 @@ main(int argc, char **argv)
                 "two_blocks.msh",
                 fs::copy_options::overwrite_existing);
   std::ofstream("self.prm") << "include self.prm\n";
+  std::ofstream("self_capitals.prm") << "INCLUDE self_capitals.prm\n";
   std::ofstream("a.prm") << base << "include b.prm\n";
   std::ofstream("b.prm") << "include a.prm\n";
   for (unsigned int k = 0; k < 40; ++k)
@@ -135,6 +136,8 @@ main(int argc, char **argv)
   std::ofstream("included_value.prm")
     << "# a value out of range, in an included file\n"
     << "subsection Time integration\n  set Time step = -1\nend\n";
+  std::ofstream("nested.prm") << "# includes another file\n"
+                              << "include deep40.prm\n\n";
   std::ofstream("included_entry.prm")
     << "# an entry that does not exist, in an included file\n\n"
     << "set Tme step = 1\n";
@@ -209,6 +212,10 @@ main(int argc, char **argv)
         // crashes: include cycles
     {"include", "includes itself", "include self.prm\n", "includes itself"},
     {"include",
+         "includes itself, INCLUDE in capitals",
+         "INCLUDE self_capitals.prm\n",
+         "includes itself"},
+    {"include",
          "two files include each other",
          "include a.prm\n",
          "includes itself"},
@@ -234,6 +241,11 @@ main(int argc, char **argv)
          "an unknown entry in an included file",
          "include included_entry.prm\n",
          "Line 3 of 'included_entry.prm'"},
+    {"include",
+         "an unknown entry after an include, INCLUDE in capitals",
+         "INCLUDE nested.prm\nset Tme step = 1\n",
+         "Line " + std::to_string(std::count(base.begin(), base.end(), '\n') + 2) +
+           " of 'case.prm'"},
     // Gmsh meshes
     {"gmsh", "triangles", gmsh("triangle.msh"), "triangles"},
     {"gmsh", "prisms", gmsh("prism.msh"), "prisms"},

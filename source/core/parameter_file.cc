@@ -41,8 +41,10 @@ namespace dyncontact
         {
           ++line_number;
           const auto first = line.find_first_not_of(" \t");
+          // (deal.II's parser also takes INCLUDE)
           if (first == std::string::npos ||
-              line.compare(first, 8, "include ") != 0)
+              (line.compare(first, 8, "include ") != 0 &&
+               line.compare(first, 8, "INCLUDE ") != 0))
             {
               out << line << "\n";
               origins.push_back("Line " + std::to_string(line_number) +
@@ -136,9 +138,11 @@ namespace dyncontact
     const auto end = message.find(tail, begin);
     if (end == std::string::npos)
       return message;
-    const std::size_t after =
-      end + tail.size() +
-      (message.compare(end + tail.size(), 1, ">") == 0 ? 1 : 0);
+    // (the source's whole name, not the start of another file's)
+    const std::string next = message.substr(end + tail.size(), 1);
+    if (next != ">" && next != ":")
+      return message;
+    const std::size_t after = end + tail.size() + (next == ">" ? 1 : 0);
     const std::string number =
       message.substr(begin + head.size(), end - begin - head.size());
     if (number.empty() ||
