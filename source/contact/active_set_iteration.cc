@@ -71,8 +71,18 @@ namespace dyncontact
     // z <- T^T z: every owned constrained entry z_i is added, times the
     // coefficient, to the entries z_j it depends on (possibly owned
     // elsewhere), and then set to zero.
+    add_to_masters(homogeneous, z);
+    zero_constrained(homogeneous, z);
+  }
+
+
+
+  void
+  ActiveSetSolver::add_to_masters(const AffineConstraints<double> &constraints,
+                                  VectorType                      &z) const
+  {
     additions = 0.;
-    for (const auto &line : homogeneous.get_lines())
+    for (const auto &line : constraints.get_lines())
       if (locally_owned.is_element(line.index))
         {
           const double z_i = z(line.index);
@@ -81,7 +91,6 @@ namespace dyncontact
         }
     additions.compress(VectorOperation::add);
     z += additions;
-    zero_constrained(homogeneous, z);
   }
 
 
@@ -249,13 +258,7 @@ namespace dyncontact
     // constraints), and those may be slave nodes. Without it a row beside
     // a hanging node got a multiplier of the wrong sign, and the active
     // set cycled (2D bar on an adaptive mesh at the release)
-    additions = 0.;
-    for (const auto &line : mesh_constraints.get_lines())
-      if (!line.entries.empty() && locally_owned.is_element(line.index))
-        for (const auto &entry : line.entries)
-          additions(entry.first) += entry.second * residual(line.index);
-    additions.compress(VectorOperation::add);
-    residual += additions;
+    add_to_masters(mesh_constraints, residual);
     const VectorType &ghosted = row_operator.with_row_ghosts(residual);
     for (unsigned int p = 0; p < rows->size(); ++p)
       {

@@ -345,7 +345,6 @@ namespace dyncontact
 
   void
   check_for_misplaced_entries(const std::string              &text,
-                              const std::string              &source,
                               const std::vector<std::string> &origins)
   {
     ParameterHandler prm;
@@ -359,11 +358,9 @@ namespace dyncontact
       {
         ++line_number;
         // where the line came from (an included file's own line)
-        const std::string origin =
-          line_number <= origins.size() ?
-            origins[line_number - 1] :
-            "Line " + std::to_string(line_number) + " of '" + source + "'";
-        const auto hash = line.find('#');
+        AssertThrow(line_number <= origins.size(), ExcInternalError());
+        const std::string &origin = origins[line_number - 1];
+        const auto         hash   = line.find('#');
         if (hash != std::string::npos)
           line.erase(hash);
         line = Utilities::trim(line);

@@ -19,7 +19,7 @@ namespace dyncontact
   {
     std::vector<std::string> origins;
     const std::string        text = expand_includes(prm_text, source, origins);
-    check_for_misplaced_entries(text, source, origins);
+    check_for_misplaced_entries(text, origins);
     ParameterHandler prm;
     declare_all_parameters(prm);
     std::istringstream in(text);

@@ -261,6 +261,11 @@ namespace dyncontact
     void
     transpose_distribute(const AffineConstraints<double> &homogeneous,
                          VectorType                      &z) const;
+    /// z_j += c_ij z_i for every owned constrained entry i of @p constraints
+    /// and its entries (c_ij, j), possibly owned elsewhere (collective).
+    void
+    add_to_masters(const AffineConstraints<double> &constraints,
+                   VectorType                      &z) const;
 
     /// The vectors of the active-set iteration, made once per solve().
     struct Scratch

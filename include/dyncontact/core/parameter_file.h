@@ -58,12 +58,12 @@ namespace dyncontact
    * an entry of another scene. The message names the line and the
    * subsections that declare the entry. Also stops if a value does not match
    * its entry's pattern (for a number: its range), naming the line, the
-   * entry with its subsections, the value and the values allowed. Called
+   * entry with its subsections, the value and the values allowed, where
+   * @p origins (from expand_includes()) says the line came from. Called
    * before the text is parsed.
    */
   void
   check_for_misplaced_entries(const std::string              &text,
-                              const std::string              &source,
                               const std::vector<std::string> &origins);
 
   /**
