@@ -7,7 +7,8 @@
 // energy change of every transfer is recorded and small (below 1% of the
 // energy); E_total + dissipation minus the transfers' changes never increases
 // (Theorem 3.2); nothing penetrates after a transfer. Also on two MPI ranks
-// (adaptive_bar_impact.mpirun=2) with the same output.
+// (adaptive_bar_impact.mpirun=2), where the bar's contact ends at 2.12
+// instead of 2.14.
 
 #include "tests.h"
 

@@ -133,8 +133,19 @@ namespace dyncontact
       criterion->execute(indicators);
     if (Utilities::MPI::max(double(indicators.linfty_norm()),
                             this->get_mpi_communicator()) > 0.)
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        triangulation, indicators, refine_fraction, coarsen_fraction);
+      {
+        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+          triangulation, indicators, refine_fraction, coarsen_fraction);
+        // where every indicator is zero (a uniform field) there is nothing
+        // to resolve: such a cell is never refined by the indicators (the
+        // refine fraction's threshold is zero when fewer cells than the
+        // fraction have non-zero indicators, and it would refine them all;
+        // they are coarsened, as the lowest)
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              indicators[cell->active_cell_index()] == 0.f)
+            cell->clear_refine_flag();
+      }
     for (const auto &criterion : criteria)
       criterion->tag_additional_cells();
     for (const auto &cell : triangulation.active_cell_iterators())

@@ -247,16 +247,30 @@ namespace dyncontact
   {
     const double energy_before = system->total_energy(u, udot);
     {
-      TimerOutput::Scope t(timer, "mesh adaptation");
+      TimerOutput::Scope t(timer, "adaptation: indicators and flags");
       mark_cells();
-      // transfer u and udot to the new mesh (p4est repartitions it)
       triangulation.prepare_coarsening_and_refinement();
+      // a mesh that does not change keeps its DoFs, operators and rows
+      bool changes = false;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (cell->refine_flag_set() || cell->coarsen_flag_set()))
+          {
+            changes = true;
+            break;
+          }
+      if (Utilities::MPI::logical_or(changes, comm) == false)
+        return {0., 0.};
+    }
+    {
+      TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
+      // transfer u and udot to the new mesh (p4est repartitions it)
       system->prepare_for_refinement(u, udot);
       triangulation.execute_coarsening_and_refinement();
     }
     setup(scene, timer);
     {
-      TimerOutput::Scope t(timer, "mesh adaptation");
+      TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       system->interpolate_after_refinement(u, udot);
     }
     // the estimates and the rows' states refer to the old mesh
@@ -266,7 +280,7 @@ namespace dyncontact
     // the transferred displacement may violate the new K_h: back onto it
     double violation;
     {
-      TimerOutput::Scope t(timer, "mesh adaptation");
+      TimerOutput::Scope t(timer, "adaptation: constraints restored");
       violation =
         integrator->restore_constraints(u, contact->get_row_operator());
     }

@@ -89,7 +89,8 @@ namespace dyncontact
     /// Refines and coarsens the cells @p mark_cells marks, transfers (u,
     /// udot) and sets up everything anew; returns the energy change of the
     /// transfer and the largest violation of the new K_h that was projected
-    /// away.
+    /// away. If no cell is marked (on any rank), nothing changes and both
+    /// are zero.
     std::pair<double, double>
     adapt_mesh(const Scene<dim>            &scene,
                const std::function<void()> &mark_cells,
