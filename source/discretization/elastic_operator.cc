@@ -3,6 +3,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace dyncontact
@@ -138,6 +140,117 @@ namespace dyncontact
         data->src,
         true);
     std::copy(data->dst.begin(), data->dst.end(), dst.begin());
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticOperator<dim>::recovery_indicators(
+    const TrilinosWrappers::MPI::Vector &field,
+    Vector<float>                       &indicators) const
+  {
+    using LAVector                             = typename Data::LAVector;
+    using Vectorized                           = typename Data::Vectorized;
+    const MatrixFree<dim, double> &matrix_free = data->matrix_free;
+    AssertDimension(field.locally_owned_size(), data->src.locally_owned_size());
+    LAVector x;
+    matrix_free.initialize_dof_vector(x);
+    std::copy(field.begin(), field.end(), x.begin());
+    x.update_ghost_values();
+
+    // int psi_i and int psi_i d_k x (k < dim), each DoF of the layout
+    LAVector              weight;
+    std::vector<LAVector> recovered(dim);
+    matrix_free.initialize_dof_vector(weight);
+    for (auto &g : recovered)
+      matrix_free.initialize_dof_vector(g);
+    FEEvaluation<dim, -1, 0, dim, double> phi(matrix_free);
+    FEEvaluation<dim, -1, 0, dim, double> psi(matrix_free);
+    Tensor<1, dim, Vectorized>            ones;
+    for (unsigned int c = 0; c < dim; ++c)
+      ones[c] = 1.;
+    for (unsigned int batch = 0; batch < matrix_free.n_cell_batches(); ++batch)
+      {
+        phi.reinit(batch);
+        phi.gather_evaluate(x, EvaluationFlags::gradients);
+        psi.reinit(batch);
+        for (const unsigned int q : psi.quadrature_point_indices())
+          psi.submit_value(ones, q);
+        psi.integrate_scatter(EvaluationFlags::values, weight);
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            for (const unsigned int q : psi.quadrature_point_indices())
+              {
+                const auto                 gradient = phi.get_gradient(q);
+                Tensor<1, dim, Vectorized> column;
+                for (unsigned int c = 0; c < dim; ++c)
+                  column[c] = gradient[c][k];
+                psi.submit_value(column, q);
+              }
+            psi.integrate_scatter(EvaluationFlags::values, recovered[k]);
+          }
+      }
+    weight.compress(VectorOperation::add);
+    for (auto &g : recovered)
+      {
+        g.compress(VectorOperation::add);
+        // a hanging DoF has no weight of its own (its cells' shares went
+        // to its parents); it is read from them below
+        for (unsigned int i = 0; i < g.locally_owned_size(); ++i)
+          if (weight.local_element(i) > 0.)
+            g.local_element(i) /= weight.local_element(i);
+        g.update_ghost_values();
+      }
+
+    // eta_K^2 = int_K |G x - grad x|^2
+    std::vector<FEEvaluation<dim, -1, 0, dim, double>> recovered_values(
+      dim, FEEvaluation<dim, -1, 0, dim, double>(matrix_free));
+    for (unsigned int batch = 0; batch < matrix_free.n_cell_batches(); ++batch)
+      {
+        phi.reinit(batch);
+        phi.gather_evaluate(x,
+                            EvaluationFlags::values |
+                              EvaluationFlags::gradients);
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            recovered_values[k].reinit(batch);
+            recovered_values[k].gather_evaluate(recovered[k],
+                                                EvaluationFlags::values);
+          }
+        Vectorized squared = 0., values = 0., volume = 0.;
+        for (const unsigned int q : phi.quadrature_point_indices())
+          {
+            const auto gradient = phi.get_gradient(q);
+            values += phi.get_value(q) * phi.get_value(q) * phi.JxW(q);
+            volume += phi.JxW(q);
+            Vectorized sum = 0.;
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                const auto value = recovered_values[k].get_value(q);
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    const Vectorized difference = value[c] - gradient[c][k];
+                    sum += difference * difference;
+                  }
+              }
+            squared += sum * phi.JxW(q);
+          }
+        for (unsigned int lane = 0;
+             lane < matrix_free.n_active_entries_per_cell_batch(batch);
+             ++lane)
+          {
+            // round-off, not a jump: a gradient error below 1e-9 of the
+            // field's mean size over the cell size h (as for the uniform
+            // velocity of a free flight)
+            const double h    = std::pow(volume[lane], 1. / dim);
+            const double mean = std::sqrt(values[lane] / volume[lane]);
+            const double eta  = std::sqrt(squared[lane]);
+            indicators[matrix_free.get_cell_iterator(batch, lane)
+                         ->active_cell_index()] =
+              (eta > 1e-9 * mean / h * std::sqrt(volume[lane])) ? eta : 0.;
+          }
+      }
   }
 
 

@@ -15,6 +15,8 @@ namespace dealii
   class DoFHandler;
   template <int dim, int spacedim>
   class Mapping;
+  template <typename Number>
+  class Vector;
 } // namespace dealii
 
 namespace dyncontact
@@ -64,6 +66,24 @@ namespace dyncontact
     vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src,
           const Form                           form) const;
+
+    /**
+     * Zienkiewicz and Zhu's indicator of @p field (an owned vector of the
+     * DoF handler's layout) on each locally owned cell K:
+     * eta_K = ||G x - grad x||_{L2(K)}, where the recovered gradient G x is
+     * the lumped L2 projection of grad x onto the finite element space (at
+     * each node the average of the cells' gradients weighted by
+     * int psi_i). It measures the gradient's jumps across faces, as
+     * Kelly's indicator does, with two cell loops and no face integrals.
+     * An eta_K below 1e-9 |K|^{1/2} x_K / h_K (x_K the root mean square of
+     * x on K, h_K = |K|^{1/dim}) is round-off and set to zero, so that a
+     * uniform field (the velocity of a free flight) flags no cells.
+     * Sets entry K->active_cell_index() of @p indicators for the locally
+     * owned cells and leaves the others unchanged.
+     */
+    void
+    recovery_indicators(const TrilinosWrappers::MPI::Vector &field,
+                        Vector<float>                       &indicators) const;
 
   private:
     struct Data;

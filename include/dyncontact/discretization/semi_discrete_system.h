@@ -260,6 +260,14 @@ namespace dyncontact
     {
       elastic_operator.vmult(y, x, ElasticOperator<dim>::Form::viscous);
     }
+    /// Zienkiewicz and Zhu's indicator of @p field on the locally owned
+    /// cells (ElasticOperator::recovery_indicators()).
+    void
+    recovery_indicators(const VectorType &field,
+                        Vector<float>    &indicators) const
+    {
+      elastic_operator.recovery_indicators(field, indicators);
+    }
     /// @p matrix = a A + b B + m M, assembled cell by cell on the sparsity
     /// pattern of the unconstrained operator (a lumped M on the diagonal in
     /// the cell loop, a consistent M added afterwards).

@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""What one mesh adaptation costs, in time steps of the same mesh (issue:
+error against run time). Runs the bar impact (N-CS++, lumped mass,
+H = 0.25, adapted every 2 steps up to 2 levels above the coarse mesh,
+tau = h_min / (2 p c)) in 2D and 3D for p = 1, 2, 3 with each velocity
+criterion, Kelly's and the gradient recovery, and prints from summary.txt's
+TimerOutput sections the milliseconds per step and per adaptation, split
+into its parts:
+  indicators  'adaptation: indicators and flags'
+  refine      'adaptation: refinement and transfer' (p4est, u and udot)
+  dofs        'setup: DoFs and sparsity'
+  assembly    'assembly' and 'contact rows'
+  S           'setup: step matrix and preconditioner'
+  restore     'adaptation: constraints restored'
+and their sum in steps. Each part is its time over its calls; the set-up
+before t = 0 adds one call to the set-up sections (less than 1 % of them).
+Then issue 31's bar to T = 2.5 s (2D, p = 1, 32 cells along, levels 0 to 2,
+tau = 1/256) with each criterion against the uniform mesh of its finest
+level: the energy-norm error at T, the mean DoFs and the time loop's wall
+time without the sampled error norms.
+One rank, Release build.
+Usage, from the repository's top folder after tools/setup.sh:
+    benchmarks/adaptation_cost.py [build/dyncontact]"""
+import csv
+import os
+import re
+import subprocess
+import sys
+
+executable = sys.argv[1] if len(sys.argv) > 1 else "build/dyncontact"
+folder = "results-adaptation-cost"
+os.makedirs(folder, exist_ok=True)
+
+# (dimension, degree, coarse cells along the length, end time)
+cases = [(2, 1, 128, 0.15), (2, 2, 64, 0.15), (2, 3, 32, 0.15),
+         (3, 1, 32, 0.125), (3, 2, 16, 0.125)]
+criteria = ["kelly velocity", "recovery velocity"]
+parts = [("indicators", ["adaptation: indicators and flags"]),
+         ("refine", ["adaptation: refinement and transfer"]),
+         ("dofs", ["setup: DoFs and sparsity"]),
+         ("assembly", ["assembly", "contact rows"]),
+         ("S", ["setup: step matrix and preconditioner"]),
+         ("restore", ["adaptation: constraints restored"])]
+
+
+def run(name, dim, degree, cells, end, criterion, tau=None, levels=2):
+    h_min = 1.0 / (cells * 2 ** levels)
+    tau = tau or h_min / (2 * degree)
+    prm = os.path.join(folder, name + ".prm")
+    with open(prm, "w") as f:
+        f.write("""set Dimension = %d
+set Polynomial degree = %d
+set Output directory = %s
+subsection Scene
+  set Name = bar impact
+  subsection Bar impact
+    set Length = 1
+    set Height = 0.25
+    set Impact velocity = 1
+    set Initial gap = 0.1
+    set Cells along length = %d
+  end
+end
+subsection Material
+  set Young's modulus = 1
+  set Poisson's ratio = 0
+  set Density = 1
+end
+subsection Time integration
+  set Scheme = N-CS++
+  set Time step = %.10g
+  set End time = %g
+  set Mass matrix = lumped
+end
+subsection Output
+  set Output interval = 0.5
+  set Write vtu = false
+end
+""" % (dim, degree, os.path.join(folder, name), cells, tau, end))
+        if criterion:
+            f.write("""subsection Mesh refinement
+  set Refinement interval = 2
+  set Maximum level = %d
+  set Initial contact refinements = %d
+  set Criteria = %s
+end
+""" % (levels, levels, criterion))
+    subprocess.run([executable, prm], check=True, stdout=subprocess.DEVNULL)
+    sections = {}
+    for line in open(os.path.join(folder, name, "summary.txt")):
+        m = re.match(r"^  (\S.*?)\s+([0-9.e+-]+) s\s+(\d+) calls", line)
+        if m:
+            sections[m.group(1)] = (float(m.group(2)), int(m.group(3)))
+    rows = list(csv.DictReader(open(os.path.join(folder, name, "statistics.tsv")),
+                               delimiter="\t"))
+    dofs = sum(float(r["dofs"]) for r in rows) / len(rows)
+    errors = [r["error_energy_norm"] for r in rows if r["error_energy_norm"]]
+    return sections, dofs, float(errors[-1]) if errors else None
+
+
+print("| dim | p | criterion | mean DoFs | ms per step | indicators | refine "
+      "| dofs | assembly | S | restore | adaptation (ms) | in steps |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+for dim, degree, cells, end in cases:
+    for criterion in criteria:
+        name = "%dd_q%d_%s" % (dim, degree, criterion.split()[0])
+        sections, dofs, _ = run(name, dim, degree, cells, end, criterion)
+        time, calls = sections["time step"]
+        step = time / calls
+        costs = []
+        for _, names in parts:
+            costs.append(sum(sections[n][0] / sections[n][1]
+                             for n in names if n in sections))
+        total = sum(costs)
+        print("| %d | %d | %s | %.0f | %.1f | %s | %.0f | %.1f |"
+              % (dim, degree, criterion.split()[0], dofs, 1e3 * step,
+                 " | ".join("%.1f" % (1e3 * c) for c in costs), 1e3 * total,
+                 total / step))
+        sys.stdout.flush()
+
+print()
+print("| bar to T = 2.5 s | error at T | mean DoFs | time loop without "
+      "sampled norms (s) |")
+print("|---|---|---|---|")
+for name, label, cells, criterion, levels in [
+        ("uniform", "uniform, 128 cells along", 128, "", 0),
+        ("kelly", "adaptive, kelly velocity", 32, "kelly velocity", 2),
+        ("recovery", "adaptive, recovery velocity", 32, "recovery velocity",
+         2)]:
+    sections, dofs, error = run("bar_" + name, 2, 1, cells, 2.5, criterion,
+                                tau=1.0 / 256, levels=levels)
+    loop = sum(t for n, (t, _) in sections.items()
+               if not n.startswith("setup: mesh") and n != "sampled norms")
+    print("| %s | %.4f | %.0f | %.2f |" % (label, error, dofs, loop))
+    sys.stdout.flush()
