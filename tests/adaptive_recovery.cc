@@ -6,7 +6,10 @@
 // - before the impact the velocity is uniform: the indicators are zero (not
 //   round-off, which the fixed fractions would turn into a random
 //   refinement, as Kelly's indicators do), no cell is marked and the mesh
-//   stays as it is (and is not rebuilt);
+//   stays as it is and is not rebuilt (summary.txt: the adaptations that
+//   changed the mesh, the calls of 'adaptation: constraints restored' and
+//   of 'adaptation: DoFs and sparsity', are fewer than those that computed
+//   indicators by at least the adaptations before the impact);
 // - the adaptive mesh has the error of the uniform mesh within 15 % (1.11
 //   times it; the uniform mesh of 32 cells along, which an indicator that
 //   missed the front would leave, has 1.32 times it) with less than half
@@ -51,6 +54,19 @@ main(int argc, char **argv)
       }
   log() << "mesh kept until t = " << fmt(last_before_impact, 2) << " ("
         << cells[0] << " cells): " << check(kept) << "\n";
+  // (every 2 steps: the adaptations before the impact)
+  const unsigned int before  = static_cast<unsigned int>(g0 / tau) / 2;
+  const std::string  summary = "output-N-CS++-32/summary.txt";
+  const unsigned int attempts =
+    timer_calls(summary, "adaptation: indicators and flags");
+  const unsigned int changes =
+    timer_calls(summary, "adaptation: constraints restored");
+  log() << "no adaptation before the impact rebuilt anything (" << before
+        << " of them): "
+        << check(attempts > before && attempts - changes >= before &&
+                 timer_calls(summary, "adaptation: DoFs and sparsity") ==
+                   changes)
+        << "\n";
   log() << "refined after the impact: " << check(max_of(cells) > 1.5 * cells[0])
         << "\n";
 

@@ -21,18 +21,7 @@ main(int argc, char **argv)
 
   // the calls of the timer section "sampled norms" in summary.txt
   const auto norm_calls = []() {
-    std::ifstream in("output-N-CS++-40/summary.txt");
-    for (std::string line; std::getline(in, line);)
-      if (line.find("sampled norms") != std::string::npos)
-        {
-          std::istringstream s(line.substr(line.find("norms") + 5));
-          double             seconds;
-          std::string        unit;
-          unsigned int       calls = 0;
-          s >> seconds >> unit >> calls;
-          return calls;
-        }
-    return 0u;
+    return timer_calls("output-N-CS++-40/summary.txt", "sampled norms");
   };
   const double tau   = 0.0125;
   auto         solve = [&](const std::string &interval, const bool vtu) {

@@ -248,6 +248,25 @@ namespace testing
 
   /// The two bars (1 and 2 cells across) on a mesh adapted every 4 steps
   /// by the velocity's Kelly indicator and the contact zone: the extra
+  /// The calls of the TimerOutput section @p section in the summary file
+  /// @p summary (0 if it is not there).
+  inline unsigned int
+  timer_calls(const std::string &summary, const std::string &section)
+  {
+    std::ifstream in(summary);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("  " + section + " ", 0) == 0)
+        {
+          std::istringstream s(line.substr(section.size() + 2));
+          double             seconds;
+          std::string        unit;
+          unsigned int       calls = 0;
+          s >> seconds >> unit >> calls;
+          return calls;
+        }
+    return 0;
+  }
+
   /// entries for bar_prm() of the adaptive resume tests.
   inline std::string
   adaptive_two_bars_prm()

@@ -28,10 +28,7 @@ namespace dyncontact
                                          {},
                                          ghosted,
                                          kelly);
-      const double maximum = Utilities::MPI::max(double(kelly.linfty_norm()),
-                                                 access.get_mpi_communicator());
-      if (maximum > 0.)
-        indicators.add(1. / maximum, kelly);
+      add_scaled(kelly, indicators, access.get_mpi_communicator());
     }
 
 

@@ -13,6 +13,18 @@ namespace dyncontact
 
 
 
+  void
+  MeshRefinement::add_scaled(const Vector<float> &eta,
+                             Vector<float>       &indicators,
+                             const MPI_Comm       comm)
+  {
+    const double maximum = Utilities::MPI::max(double(eta.linfty_norm()), comm);
+    if (maximum > 0.)
+      indicators.add(1. / maximum, eta);
+  }
+
+
+
   template <int dim>
   void
   MeshAdaptor<dim>::declare_parameters(ParameterHandler &prm)
@@ -137,10 +149,11 @@ namespace dyncontact
         parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
           triangulation, indicators, refine_fraction, coarsen_fraction);
         // where every indicator is zero (a uniform field) there is nothing
-        // to resolve: such a cell is never refined by the indicators (the
-        // refine fraction's threshold is zero when fewer cells than the
-        // fraction have non-zero indicators, and it would refine them all;
-        // they are coarsened, as the lowest)
+        // to refine. When fewer cells than the refine fraction have
+        // non-zero indicators, the fraction's threshold is zero and
+        // deal.II's marking flags every such cell for refinement (and so
+        // none for coarsening): those cells are left as they are. When
+        // more have, such cells are the lowest and may be coarsened.
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned() &&
               indicators[cell->active_cell_index()] == 0.f)

@@ -19,10 +19,7 @@ namespace dyncontact
     {
       Vector<float> eta(indicators.size());
       access.get_system().recovery_indicators(field, eta);
-      const double maximum = Utilities::MPI::max(double(eta.linfty_norm()),
-                                                 access.get_mpi_communicator());
-      if (maximum > 0.)
-        indicators.add(1. / maximum, eta);
+      add_scaled(eta, indicators, access.get_mpi_communicator());
     }
 
 

@@ -62,10 +62,15 @@ namespace dyncontact
 
   template <int dim>
   void
-  DiscreteProblem<dim>::setup(const Scene<dim> &scene, TimerOutput &timer)
+  DiscreteProblem<dim>::setup(const Scene<dim> &scene,
+                              TimerOutput      &timer,
+                              const bool        adapting)
   {
+    const std::string prefix = adapting ? "adaptation: " : "";
     {
-      TimerOutput::Scope t(timer, "setup: DoFs and sparsity");
+      TimerOutput::Scope t(timer,
+                           adapting ? "adaptation: DoFs and sparsity" :
+                                      "setup: DoFs and sparsity");
       system->setup(triangulation, scene);
       // the dynamic sparsity pattern's rows
       release_freed_memory();
@@ -73,12 +78,12 @@ namespace dyncontact
             << ", DoFs: " << system->get_dof_handler().n_dofs() << std::endl;
     }
     {
-      TimerOutput::Scope t(timer, "assembly");
+      TimerOutput::Scope t(timer, prefix + "assembly");
       system->assemble(scene);
       if (scheme.is_static)
         check_rigid_motions(scene);
     }
-    TimerOutput::Scope t(timer, "contact rows");
+    TimerOutput::Scope t(timer, prefix + "contact rows");
     contact->setup(scene, *system, mapping, pcout);
   }
 
@@ -113,9 +118,12 @@ namespace dyncontact
 
   template <int dim>
   void
-  DiscreteProblem<dim>::make_integrator(TimerOutput &timer)
+  DiscreteProblem<dim>::make_integrator(TimerOutput &timer, const bool adapting)
   {
-    TimerOutput::Scope t(timer, "setup: step matrix and preconditioner");
+    TimerOutput::Scope t(timer,
+                         adapting ?
+                           "adaptation: step matrix and preconditioner" :
+                           "setup: step matrix and preconditioner");
     if (integrator)
       n_earlier_step_matrices +=
         integrator->get_operators().n_step_matrices_built;
@@ -268,14 +276,14 @@ namespace dyncontact
       system->prepare_for_refinement(u, udot);
       triangulation.execute_coarsening_and_refinement();
     }
-    setup(scene, timer);
+    setup(scene, timer, true);
     {
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       system->interpolate_after_refinement(u, udot);
     }
     // the estimates and the rows' states refer to the old mesh
     time_step_controller.reset(contact->get_rows().size());
-    make_integrator(timer);
+    make_integrator(timer, true);
 
     // the transferred displacement may violate the new K_h: back onto it
     double violation;

@@ -76,8 +76,11 @@ namespace dyncontact
      * int psi_i). It measures the gradient's jumps across faces, as
      * Kelly's indicator does, with two cell loops and no face integrals.
      * An eta_K below 1e-9 |K|^{1/2} x_K / h_K (x_K the root mean square of
-     * x on K, h_K = |K|^{1/dim}) is round-off and set to zero, so that a
-     * uniform field (the velocity of a free flight) flags no cells.
+     * x on K, h_K = |K|^{1/dim}) is negligible and set to zero, so that a
+     * uniform field (the velocity of a free flight, whose eta_K are
+     * round-off) flags no cells. (The bound grows with x_K: a displacement
+     * with a large rigid translation hides gradient jumps below
+     * 1e-9 x_K / h_K.)
      * Sets entry K->active_cell_index() of @p indicators for the locally
      * owned cells and leaves the others unchanged.
      */

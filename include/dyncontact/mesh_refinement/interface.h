@@ -50,6 +50,14 @@ namespace dyncontact
       tag_additional_cells() const
       {}
     };
+
+    /// Adds @p eta (one value per active cell), scaled to maximum 1 over
+    /// all ranks of @p comm, to @p indicators; nothing if @p eta is zero
+    /// everywhere.
+    void
+    add_scaled(const Vector<float> &eta,
+               Vector<float>       &indicators,
+               const MPI_Comm       comm);
   } // namespace MeshRefinement
 
   extern template class PluginRegistry<MeshRefinement::Interface>;

@@ -56,14 +56,20 @@ namespace dyncontact
                const bool         coarse_only,
                TimerOutput       &timer);
 
-    /// DoFs, matrices and contact rows on the current mesh.
+    /// DoFs, matrices and contact rows on the current mesh, timed as
+    /// 'setup: DoFs and sparsity', 'assembly' and 'contact rows', or, in a
+    /// mesh adaptation (@p adapting), as 'adaptation: DoFs and sparsity',
+    /// 'adaptation: assembly' and 'adaptation: contact rows'.
     void
-    setup(const Scene<dim> &scene, TimerOutput &timer);
+    setup(const Scene<dim> &scene,
+          TimerOutput      &timer,
+          const bool        adapting = false);
 
     /// The step matrix, its preconditioner and the active-set solvers for
-    /// the controller's tau.
+    /// the controller's tau, timed as 'setup: step matrix and
+    /// preconditioner', or 'adaptation: step matrix and preconditioner'.
     void
-    make_integrator(TimerOutput &timer);
+    make_integrator(TimerOutput &timer, const bool adapting = false);
 
     /// An initially penetrating u (allowed only with 'Initial penetration
     /// = project'): its M-projection onto K_h, with a warning.
