@@ -257,8 +257,11 @@ namespace dyncontact
     // weight, to the nodes it hangs on (T^T of the hanging-node
     // constraints), and those may be slave nodes. Without it a row beside
     // a hanging node got a multiplier of the wrong sign, and the active
-    // set cycled (2D bar on an adaptive mesh at the release)
-    add_to_masters(mesh_constraints, residual);
+    // set cycled (2D bar on an adaptive mesh at the release). Without
+    // hanging nodes (on every rank) it adds nothing: skipped, with its
+    // communication.
+    if (mesh_has_hanging_nodes)
+      add_to_masters(mesh_constraints, residual);
     const VectorType &ghosted = row_operator.with_row_ghosts(residual);
     for (unsigned int p = 0; p < rows->size(); ++p)
       {

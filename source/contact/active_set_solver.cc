@@ -199,7 +199,11 @@ namespace dyncontact
     row_operator.reinit(owned, relevant, contact_rows);
     mesh_constraints.clear();
     mesh_constraints.copy_from(constraints);
-    rows = &contact_rows;
+    bool hanging = false;
+    for (const auto &line : mesh_constraints.get_lines())
+      hanging |= locally_owned.is_element(line.index) && !line.entries.empty();
+    mesh_has_hanging_nodes = Utilities::MPI::logical_or(hanging, comm);
+    rows                   = &contact_rows;
     Tx.reinit(locally_owned, comm);
     additions.reinit(locally_owned, row_operator.ghost_set(), comm, true);
     H = nullptr;

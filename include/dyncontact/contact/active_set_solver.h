@@ -320,8 +320,11 @@ namespace dyncontact
 
     IndexSet                  locally_owned;
     AffineConstraints<double> mesh_constraints;
-    const ContactRows        *rows = nullptr;
-    ContactRowOperator        row_operator;
+    /// Whether a line of mesh_constraints has entries on some rank (hanging
+    /// nodes; Dirichlet lines have none).
+    bool               mesh_has_hanging_nodes = false;
+    const ContactRows *rows                   = nullptr;
+    ContactRowOperator row_operator;
 
     /// H, nullptr if it is diagonal (then given by @p diagonal alone).
     const MatrixType *H         = nullptr;
