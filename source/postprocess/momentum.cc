@@ -1,6 +1,9 @@
 // Linear momentum (Theorem 3.1): sum of M udot over the DoFs of each
 // displacement component, for all bodies, and for the second body alone in
-// two-body scenes.
+// two-body scenes. Mean displacement: the mass-weighted mean of u per
+// component and body, sum of M u over sum of M 1, the displacement of the
+// body's centre of mass (the position error of a body beside its
+// energy-norm error).
 
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/postprocess/interface.h>
@@ -10,6 +13,33 @@ namespace dyncontact
 {
   namespace Postprocess
   {
+    namespace
+    {
+      /**
+       * Sums of (M x)_i over each body's DoFs of each component, over all
+       * ranks: entry 3 b + d for body b and component d.
+       */
+      template <int dim>
+      std::vector<double>
+      body_sums(const SemiDiscreteSystem<dim> &system,
+                const VectorType              &x,
+                const unsigned int             n_bodies,
+                const MPI_Comm                 communicator)
+      {
+        VectorType M_x;
+        system.matrices().mass_vmult(M_x, x);
+        std::vector<double>               sums(3 * n_bodies, 0.);
+        const std::vector<unsigned char> &slots  = system.get_owned_dof_slots();
+        const double                     *values = M_x.begin();
+        for (std::size_t k = 0; k < slots.size(); ++k)
+          sums[3 * (slots[k] / dim) + slots[k] % dim] += values[k];
+        Utilities::MPI::sum(sums, communicator, sums);
+        return sums;
+      }
+    } // namespace
+
+
+
     template <int dim>
     class Momentum : public Interface<dim>
     {
@@ -30,21 +60,12 @@ namespace dyncontact
       void
       execute(std::vector<double> &row) override
       {
-        const SemiDiscreteSystem<dim> &system   = this->get_system();
-        const unsigned int             n_bodies = this->get_scene().n_bodies();
-        VectorType                     M_udot;
-        system.matrices().mass_vmult(M_udot, this->get_velocity());
-
-        // sums of (M udot)_i over each body's DoFs of each component, in
-        // the order of the DoF numbers
-        std::vector<double>               body_momentum(3 * n_bodies, 0.);
-        const std::vector<unsigned char> &slots  = system.get_owned_dof_slots();
-        const double                     *values = M_udot.begin();
-        for (std::size_t k = 0; k < slots.size(); ++k)
-          body_momentum[3 * (slots[k] / dim) + slots[k] % dim] += values[k];
-        Utilities::MPI::sum(body_momentum,
-                            this->get_mpi_communicator(),
-                            body_momentum);
+        const unsigned int        n_bodies = this->get_scene().n_bodies();
+        const std::vector<double> body_momentum =
+          body_sums(this->get_system(),
+                    this->get_velocity(),
+                    n_bodies,
+                    this->get_mpi_communicator());
         std::vector<double> momentum(3, 0.);
         for (unsigned int b = 0; b < n_bodies; ++b)
           for (unsigned int d = 0; d < 3; ++d)
@@ -60,5 +81,50 @@ namespace dyncontact
                                       20,
                                       "linear momentum, total and of the "
                                       "second body (Theorem 3.1)")
+
+
+
+    template <int dim>
+    class MeanDisplacement : public Interface<dim>
+    {
+    public:
+      /// One body: mean_displacement_x, _y, _z; two bodies: the same names
+      /// with _body1 and _body2 (the centre of mass of both is of no use).
+      std::vector<std::string>
+      columns() const override
+      {
+        const unsigned int       n_bodies = this->get_scene().n_bodies();
+        std::vector<std::string> names;
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          for (const char *d : {"_x", "_y", "_z"})
+            names.push_back(
+              std::string("mean_displacement") + d +
+              (n_bodies == 1 ? "" : "_body" + std::to_string(b + 1)));
+        return names;
+      }
+
+      void
+      execute(std::vector<double> &row) override
+      {
+        const SemiDiscreteSystem<dim> &system   = this->get_system();
+        const unsigned int             n_bodies = this->get_scene().n_bodies();
+        VectorType                     ones(this->get_solution());
+        ones                          = 1.;
+        const std::vector<double> M_u = body_sums(system,
+                                                  this->get_solution(),
+                                                  n_bodies,
+                                                  this->get_mpi_communicator());
+        const std::vector<double> mass =
+          body_sums(system, ones, n_bodies, this->get_mpi_communicator());
+        for (unsigned int k = 0; k < 3 * n_bodies; ++k)
+          row.push_back(mass[k] > 0. ? M_u[k] / mass[k] : 0.);
+      }
+    };
+
+    DYNCONTACT_REGISTER_POSTPROCESSOR(MeanDisplacement,
+                                      "mean displacement",
+                                      21,
+                                      "mass-weighted mean displacement of "
+                                      "each body (of its centre of mass)")
   } // namespace Postprocess
 } // namespace dyncontact
