@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <sstream>
 
 namespace dyncontact
 {
@@ -22,7 +23,8 @@ namespace dyncontact
                       "slave (its nodes carry the constraint rows): auto (the "
                       "scene's choice if it makes one, as the Hertz scenes "
                       "with 'Block mesh = matched' do, else the finer side, "
-                      "by mean face size), 1 or 2.");
+                      "by mean face size, of the mesh at t = 0, kept when "
+                      "the mesh adapts), 1 or 2.");
     prm.declare_entry("Search radius",
                       "0",
                       Patterns::Double(0.),
@@ -381,9 +383,14 @@ namespace dyncontact
     const std::array<types::global_dof_index, 2> n_faces = {
       {Utilities::MPI::sum<types::global_dof_index>(sides[0].size(), comm),
        Utilities::MPI::sum<types::global_dof_index>(sides[1].size(), comm)}};
-    const unsigned int slave = pair.slave_side < 0 ?
-                                 finer_side(sides, pair.search_radius) :
-                                 pair.slave_side;
+    const unsigned int slave = pair.slave_side >= 0 ?
+                                 pair.slave_side :
+                                 (pair_index < kept_slave_sides.size() ?
+                                    kept_slave_sides[pair_index] :
+                                    finer_side(sides, pair.search_radius));
+    if (slave_sides.size() <= pair_index)
+      slave_sides.resize(pair_index + 1, 0);
+    slave_sides[pair_index] = slave;
 
     // this rank's slave nodes, then the master faces near them
     const std::vector<BoundaryNode> nodes =
@@ -594,6 +601,49 @@ namespace dyncontact
             }
     return local;
   }
+
+  template <int dim>
+  void
+  ContactSetup<dim>::keep_slave_sides()
+  {
+    kept_slave_sides = slave_sides;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::save(std::map<std::string, std::string> &state) const
+  {
+    std::ostringstream s;
+    for (const unsigned int side : kept_slave_sides)
+      s << side << ' ';
+    state["contact_slave_sides"] = s.str();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::load(const std::map<std::string, std::string> &state)
+  {
+    const auto entry = state.find("contact_slave_sides");
+    if (entry == state.end())
+      return;
+    kept_slave_sides.clear();
+    std::istringstream s(entry->second);
+    unsigned int       side;
+    while (s >> side)
+      {
+        AssertThrow(side <= 1,
+                    ExcMessage("The checkpoint's contact_slave_sides entry "
+                               "is corrupt: '" +
+                               entry->second + "'."));
+        kept_slave_sides.push_back(side);
+      }
+  }
+
+
 
   template class ContactSetup<2>;
   template class ContactSetup<3>;

@@ -94,6 +94,8 @@ namespace dyncontact
         p.triangulation.execute_coarsening_and_refinement();
         p.setup(*scene, *timer);
       }
+    // the slave sides of the mesh at t = 0 stay when the mesh adapts
+    p.get_contact().keep_slave_sides();
     p.get_system().interpolate_initial_values(*scene, p.u, p.udot);
     time_step_controller.reset(p.get_contact().get_rows().size());
     p.make_integrator(*timer);
@@ -145,6 +147,7 @@ namespace dyncontact
     postprocessors->load(state);
     DiscreteProblem<dim> &p = *problem;
     p.triangulation.load(Checkpoints::mesh_file(dir));
+    p.get_contact().load(state);
     p.setup(*scene, *timer);
     VectorType              flags;
     std::vector<VectorType> controller_vectors(
@@ -230,6 +233,7 @@ namespace dyncontact
     postprocessors->save(state);
     mesh_transfer.save(state);
     vtu_writer->save(state);
+    p.get_contact().save(state);
     // the last step of a run does not adapt the mesh: a resumed run does
     state["refinement_pending"] =
       moments.last && mesh_adaptor->refinement_due(control.get_step()) ? "1" :

@@ -11,6 +11,8 @@
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace dealii
@@ -71,6 +73,23 @@ namespace dyncontact
     {
       return rows;
     }
+
+    /**
+     * Keeps the slave sides that "Slave side = auto" chose on the current
+     * mesh (the mesh at t = 0) for every later set-up, so that an adapted
+     * mesh does not swap slave and master: the master nodes, which the
+     * node-to-segment rows do not hold, would then stand inside the other
+     * body and be pushed out at once. Saved in checkpoints.
+     */
+    void
+    keep_slave_sides();
+
+    void
+    save(std::map<std::string, std::string> &state) const;
+    /// Before the set-up of a resumed run; no entry (an older checkpoint):
+    /// the sides are chosen on the checkpoint's mesh.
+    void
+    load(const std::map<std::string, std::string> &state);
 
     /// For each of this rank's rows, the scalar DoF of its slave node (for
     /// output).
@@ -203,6 +222,10 @@ namespace dyncontact
     IndexSet                                  locally_relevant;
     std::vector<types::global_dof_index>      row_scalar_dofs;
     ContactRowOperator                        row_operator;
+    /// Per pair: the slave side (0, 1) of the last set-up, and those kept by
+    /// keep_slave_sides() (empty: chosen anew at each set-up).
+    std::vector<unsigned int> slave_sides;
+    std::vector<unsigned int> kept_slave_sides;
   };
 } // namespace dyncontact
 

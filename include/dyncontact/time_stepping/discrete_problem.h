@@ -134,6 +134,11 @@ namespace dyncontact
     {
       return *contact;
     }
+    ContactSetup<dim> &
+    get_contact()
+    {
+      return *contact;
+    }
     const TimeIntegrator &
     get_integrator() const
     {
