@@ -636,11 +636,15 @@ namespace dyncontact
     while (s >> side)
       {
         AssertThrow(side <= 1,
-                    ExcMessage("The checkpoint's contact_slave_sides entry "
-                               "is corrupt: '" +
+                    ExcMessage("Checkpointing/Resume: the checkpoint's "
+                               "contact_slave_sides entry is damaged: '" +
                                entry->second + "'."));
         kept_slave_sides.push_back(side);
       }
+    AssertThrow(s.eof(),
+                ExcMessage("Checkpointing/Resume: the checkpoint's "
+                           "contact_slave_sides entry is damaged: '" +
+                           entry->second + "'."));
   }
 
 

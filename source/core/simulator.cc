@@ -149,6 +149,10 @@ namespace dyncontact
     p.triangulation.load(Checkpoints::mesh_file(dir));
     p.get_contact().load(state);
     p.setup(*scene, *timer);
+    if (state.count("contact_slave_sides") == 0)
+      // a checkpoint of a version that chose them anew at every set-up:
+      // those of the checkpoint's mesh are kept from now on
+      p.get_contact().keep_slave_sides();
     VectorType              flags;
     std::vector<VectorType> controller_vectors(
       time_step_controller.n_checkpoint_vectors(state));

@@ -252,14 +252,19 @@ namespace dyncontact
     void
     Manager<dim>::load(const std::map<std::string, std::string> &state)
     {
+      const std::string damaged =
+        "the statistics in the checkpoint are damaged, or have other "
+        "columns than this run's (a checkpoint of another version of the "
+        "program, or of another Postprocess/List of postprocessors)";
       std::istringstream rows(state.at("statistics"));
       std::size_t        n_rows = 0;
       rows >> n_rows;
       // every value takes at least two characters: a count beyond that is
-      // damage and must not drive an allocation
+      // damage and must not drive an allocation (the rows have no names: a
+      // checkpoint of a run with other columns reads as damaged)
       AssertThrow(!rows.fail() && n_rows * statistics.columns.size() <=
                                     state.at("statistics").size() / 2,
-                  ExcMessage("the statistics in the checkpoint are damaged"));
+                  ExcMessage(damaged));
       statistics.rows.assign(n_rows,
                              std::vector<double>(statistics.columns.size()));
       // token by token: std::stod reads nan and inf, operator>> does not
@@ -268,9 +273,7 @@ namespace dyncontact
         for (double &value : row)
           {
             rows >> token;
-            AssertThrow(!rows.fail(),
-                        ExcMessage(
-                          "the statistics in the checkpoint are damaged"));
+            AssertThrow(!rows.fail(), ExcMessage(damaged));
             value = std::stod(token);
           }
       for (auto &postprocessor : postprocessors)

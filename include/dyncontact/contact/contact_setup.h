@@ -86,8 +86,9 @@ namespace dyncontact
 
     void
     save(std::map<std::string, std::string> &state) const;
-    /// Before the set-up of a resumed run; no entry (an older checkpoint):
-    /// the sides are chosen on the checkpoint's mesh.
+    /// Before the set-up of a resumed run. A checkpoint without the entry
+    /// (of an older version) leaves them to be chosen on the checkpoint's
+    /// mesh (and kept by keep_slave_sides() after that set-up).
     void
     load(const std::map<std::string, std::string> &state);
 
