@@ -110,20 +110,7 @@ main(int argc, char **argv)
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
       std::ofstream("two_bars_recovery.prm")
-        << bar_prm(2,
-                   "N-CS++",
-                   40,
-                   1. / 160.,
-                   0.8,
-                   scene_prm("two bars",
-                             "    set Cells across = 4\n"
-                             "    set Cells across body 2 = 5\n") +
-                     "subsection Mesh refinement\n"
-                     "  set Refinement interval = 2\n"
-                     "  set Maximum level = 1\n"
-                     "  set Initial contact refinements = 1\n"
-                     "  set Criteria = recovery velocity\n"
-                     "end\n")
+        << bar_prm(2, "N-CS++", 40, 1. / 160., 0.8, recovery_two_bars_prm())
         << "set Output directory = output-two-bars-recovery\n";
       const std::string text = run_clean(std::string(DYNCONTACT_EXECUTABLE) +
                                          " two_bars_recovery.prm");

@@ -47,15 +47,7 @@ main(int argc, char **argv)
         Case{"bar impact", "bar-sampled", sampled, 1.225, 49},
         Case{"two bars, recovery indicator",
              "two-bars-sides",
-             scene_prm("two bars",
-                       "    set Cells across = 4\n"
-                       "    set Cells across body 2 = 5\n") +
-               "subsection Mesh refinement\n"
-               "  set Refinement interval = 2\n"
-               "  set Maximum level = 1\n"
-               "  set Initial contact refinements = 1\n"
-               "  set Criteria = recovery velocity\n"
-               "end\n",
+             recovery_two_bars_prm(),
              0.6375,
              102,
              40,

@@ -283,6 +283,24 @@ namespace testing
            "end\n";
   }
 
+  /// entries for bar_prm() (40 cells along, tau = 1/160 s): two bars of 4
+  /// and 5 cells across the coarse mesh, adapted by the recovery indicator
+  /// up to one level; the finer side of the interface changes at t = 0.63
+  /// s, on 1 and 2 ranks.
+  inline std::string
+  recovery_two_bars_prm()
+  {
+    return scene_prm("two bars",
+                     "    set Cells across = 4\n"
+                     "    set Cells across body 2 = 5\n") +
+           "subsection Mesh refinement\n"
+           "  set Refinement interval = 2\n"
+           "  set Maximum level = 1\n"
+           "  set Initial contact refinements = 1\n"
+           "  set Criteria = recovery velocity\n"
+           "end\n";
+  }
+
   struct Outcome
   {
     int         status;

@@ -1,0 +1,264 @@
+#!/usr/bin/python3
+"""Error against run time (the frontier), per scene and per polynomial degree
+p = 1, 2, 3, on uniform and adaptive meshes, N-CS++, one core.
+
+Run time is the time loop of summary.txt without its 'sampled norms' (the
+error's own integration), so that a run is timed as a user would run it.
+
+Scenes and what is measured (errors relative, except times and positions):
+- bar: the 2D bar impact of prm/bar_impact.prm with H = 0.25 m to T = 2.5 s,
+  against the exact solution. tau = h/(2 p c) with h the finest cell along
+  the bar. Energy-norm error at T over sqrt(E(0)) (and its maximum over the
+  output times), position error |d(T) - 0.3 m| of the mean displacement
+  (the bar left the wall at 2.1 s with v0), the error of the release time
+  (exact 2.1 s; the contact interval's start is t = 0.1 s to tau for every
+  run), the pressure overshoot max p / (rho c v0) - 1 and the ripple
+  max |p / (rho c v0) - 1| over the middle half of the contact, [0.6, 1.6] s.
+- two bars: prm/two_bars.prm (H = 0.1 m) to T = 2.5 s, exact solution; the
+  same measures, the position of the second bar; square cells, n/10 across
+  the first bar and n/10 + 1 across the second (non-matching) for n along.
+- hertz: the 2D Hertz drop of prm/hertz_drop.prm to t = 0.6 s (no exact
+  solution): against a uniform reference run with p = 2 and one global
+  refinement more than the finest p = 2 run, same tau = 0.01 s (the spatial
+  error): the largest difference of the contact force from the reference's
+  over time relative to its peak, the position error of the falling body at
+  T relative to its largest displacement in the reference, the peak force's
+  error. The load keeps the bodies in contact: no release time.
+- ball_drop: the 3D ball drop of prm/ball_drop_adaptive.prm (to 1.5 s,
+  tau = 0.02 s) in the same way, p = 1 at 1 and 2 global refinements and
+  adaptive up to 2, p = 2 at 1, against p = 1 at 3 global refinements
+  (1.2e5 DoFs; a p = 2 reference there, 8.8e5 DoFs, takes about 100 s per
+  contact step on one core), with the release-time error.
+Adaptive meshes: the coarse mesh of the uniform run two levels coarser (one
+for the two bars, whose coarse mesh across would be less than a cell),
+refined up to the same finest level, every 2 steps (refine 20 %, coarsen
+30 %, the defaults), by the Kelly or the recovery indicator of the velocity; the Hertz drop as in
+benchmarks/adaptivity.py (one global refinement, Kelly of the velocity on
+2 % and the contact zone, half of the cells coarsened).
+
+Writes doc/work_precision_<scene>.png and prints the tables of
+doc/results.md. Usage, from the repository's top folder after tools/setup.sh:
+    benchmarks/work_precision.py [build/dyncontact] [scene ...]"""
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+executable = sys.argv[1] if len(sys.argv) > 1 else "build/dyncontact"
+only = sys.argv[2:]
+work = "results-work-precision"
+os.makedirs(work, exist_ok=True)
+
+
+def run(name, text):
+    """Runs one prm (text), returns its statistics rows and summary."""
+    directory = os.path.join(work, name.replace(" ", "-"))
+    prm = directory + ".prm"
+    with open(prm, "w") as f:
+        f.write(text + "\nset Output directory = %s\n" % directory)
+        f.write("subsection Output\n  set Write vtu = false\nend\n")
+    subprocess.run([executable, prm], check=True, stdout=subprocess.DEVNULL)
+    rows = list(csv.DictReader(open(directory + "/statistics.tsv"), delimiter="\t"))
+    summary = open(directory + "/summary.txt").read()
+    return rows, summary
+
+
+def run_time(summary):
+    """Time loop without the sampled norms (s)."""
+    loop = float(re.search(r"of which the time loop ([0-9.e+-]+) s", summary).group(1))
+    sampled = re.search(r"\n\s*sampled norms\s+([0-9.e+-]+) s", summary)
+    return loop - (float(sampled.group(1)) if sampled else 0.)
+
+
+def contact_intervals(summary):
+    line = re.search(r"contact intervals: (.*)", summary).group(1)
+    return [(float(a), float(b)) for a, b in
+            re.findall(r"\[([0-9.e+-]+), ([0-9.e+-]+)\]", line)]
+
+
+def column(rows, name):
+    return [float(r[name]) for r in rows]
+
+
+def mean(values):
+    return sum(values) / len(values)
+
+
+def scene_prm(base, scene, entries):
+    return base + "\nsubsection Scene\n  subsection %s\n%s  end\nend\n" % (
+        scene, "".join("    set %s = %s\n" % e for e in entries))
+
+
+def mesh_prm(p, tau, global_refinements=None, adaptive=None):
+    text = "set Polynomial degree = %d\n" % p
+    text += "subsection Time integration\n  set Time step = %.17g\nend\n" % tau
+    if global_refinements is not None:
+        text += "subsection Mesh\n  set Initial global refinements = %d\nend\n" % global_refinements
+    if adaptive:
+        text += ("subsection Mesh refinement\n  set Refinement interval = 2\n"
+                 "  set Maximum level = %d\n  set Minimum level = %d\n"
+                 "  set Initial contact refinements = %d\n"
+                 "  set Criteria = %s\n  set Refine fraction = %g\n"
+                 "  set Coarsen fraction = %g\nend\n" % adaptive)
+    return text
+
+
+results = {}  # scene -> list of dicts
+
+
+def bar_measures(rows, summary, position_column):
+    e0 = float(rows[0]["energy_total"])
+    errors = [(float(r["time"]), float(r["error_energy_norm"])) for r in rows
+              if not math.isnan(float(r["error_energy_norm"]))]
+    intervals = contact_intervals(summary)
+    pressure = column(rows, "max_contact_pressure")
+    times = column(rows, "time")
+    plateau = [p for t, p in zip(times, pressure) if 0.6 <= t <= 1.6]
+    return {"error": errors[-1][1] / math.sqrt(e0),
+            "error max": max(e for _, e in errors) / math.sqrt(e0),
+            "position": abs(float(rows[-1][position_column]) - 0.3),
+            "release": abs(intervals[-1][1] - 2.1) if intervals else float("nan"),
+            "intervals": len(intervals),
+            "overshoot": max(pressure) - 1.,
+            "ripple": max(abs(p - 1.) for p in plateau)}
+
+
+def bar_scene(key, base, scene, cells_list, position_column, across, levels, criteria):
+    """across(cells along) -> scene entries of the cells across."""
+    def entries(cells):
+        return [("Cells along length", cells)] + across(cells)
+
+    for p in [1, 2, 3]:
+        for cells in cells_list[p]:
+            tau = 1. / cells / (2. * p)
+            rows, summary = run("%s-p%d-uniform-%d" % (key, p, cells),
+                                scene_prm(base, scene, entries(cells)) + mesh_prm(p, tau))
+            results.setdefault(key, []).append(dict(
+                p=p, mesh="uniform", finest=cells, dofs=mean(column(rows, "dofs")),
+                time=run_time(summary), **bar_measures(rows, summary, position_column)))
+        cells = cells_list[p][-1]
+        for name, crit in criteria:
+            tau = 1. / cells / (2. * p)
+            coarse = entries(cells // 2 ** levels)
+            rows, summary = run("%s-p%d-%s-%d" % (key, p, name, cells),
+                                scene_prm(base, scene, coarse) +
+                                mesh_prm(p, tau, adaptive=(levels, 0, levels, crit, 0.2, 0.3)))
+            results.setdefault(key, []).append(dict(
+                p=p, mesh=name, finest=cells, dofs=mean(column(rows, "dofs")),
+                time=run_time(summary), **bar_measures(rows, summary, position_column)))
+
+
+bar = open("prm/bar_impact.prm").read()
+if not only or "bar" in only:
+    bar_scene("bar", bar, "Bar impact",
+              {1: [16, 32, 64, 128], 2: [8, 16, 32, 64], 3: [8, 16, 32]},
+              "mean_displacement_x", lambda cells: [("Height", 0.25)], 2,
+              [("adaptive recovery", "recovery velocity"),
+               ("adaptive kelly", "kelly velocity")])
+
+two_bars = open("prm/two_bars.prm").read()
+if not only or "two_bars" in only:
+    bar_scene("two_bars", two_bars, "Two bars",
+              {1: [20, 40, 80], 2: [10, 20, 40], 3: [10, 20]},
+              "mean_displacement_x_body2",
+              lambda cells: [("Cells across", cells // 10),
+                             ("Cells across body 2", cells // 10 + 1)], 1,
+              [("adaptive recovery", "recovery velocity")])
+
+def reference_scene(key, text, levels, reference_p, reference_level, tau, adaptive_min):
+    """Uniform runs per p at the given levels, one adaptive run per p up to
+    the finest of them if that is above adaptive_min (from global level
+    adaptive_min, Kelly of the velocity on 2 % and the contact zone, half
+    coarsened), against a uniform run of degree reference_p at
+    reference_level with the same tau."""
+    reference_rows, reference_summary = run("%s-reference" % key,
+                                            text + mesh_prm(reference_p, tau, reference_level))
+    f_ref = column(reference_rows, "contact_force")
+    peak = max(f_ref)
+    d_ref = column(reference_rows, "mean_displacement_y_body1")
+    travel = max(abs(d) for d in d_ref)
+    end = float(reference_rows[-1]["time"])
+    release_ref = contact_intervals(reference_summary)[-1][1]
+    released = release_ref < end - 0.5 * tau
+
+    def measures(rows, summary):
+        intervals = contact_intervals(summary)
+        values = {"error": max(abs(a - b) for a, b in
+                               zip(column(rows, "contact_force"), f_ref)) / peak,
+                  "position": abs(float(rows[-1]["mean_displacement_y_body1"]) - d_ref[-1]) / travel}
+        if released:
+            values["release"] = abs(intervals[-1][1] - release_ref) if intervals else float("nan")
+        values["intervals"] = len(intervals)
+        values["peak force"] = max(column(rows, "contact_force")) / peak - 1.
+        return values
+
+    for p in sorted(levels):
+        for level in levels[p]:
+            rows, summary = run("%s-p%d-uniform-%d" % (key, p, level),
+                                text + mesh_prm(p, tau, level))
+            results.setdefault(key, []).append(dict(
+                p=p, mesh="uniform", finest=level, dofs=mean(column(rows, "dofs")),
+                time=run_time(summary), **measures(rows, summary)))
+        level = levels[p][-1]
+        if level <= adaptive_min:
+            continue
+        rows, summary = run("%s-p%d-adaptive-%d" % (key, p, level), text + mesh_prm(
+            p, tau, adaptive_min, adaptive=(level, adaptive_min, level,
+                                            "kelly velocity, contact zone", 0.02, 0.5)))
+        results.setdefault(key, []).append(dict(
+            p=p, mesh="adaptive kelly", finest=level, dofs=mean(column(rows, "dofs")),
+            time=run_time(summary), **measures(rows, summary)))
+
+
+if not only or "hertz" in only:
+    hertz = open("prm/hertz_drop.prm").read().replace("set End time  = 1", "set End time  = 0.6")
+    hertz += "\nsubsection Scene\n  subsection Hertz\n    set Contact zone refinements = 0\n  end\nend\n"
+    reference_scene("hertz", hertz, {1: [2, 3, 4], 2: [1, 2, 3], 3: [1, 2]}, 2, 4, 0.01, 1)
+
+if not only or "ball_drop" in only:
+    ball = open("prm/ball_drop_adaptive.prm").read()
+    ball = ball[:ball.index("subsection Mesh refinement")] + ball[ball.index("subsection Material\n"):]
+    ball = ball.replace("set Output interval = 0.1", "set Output interval = 0.5")
+    reference_scene("ball_drop", ball, {1: [1, 2], 2: [1]}, 1, 3, 0.02, 1)
+
+for key, values in results.items():
+    print("\n%s:\n" % key)
+    measures = [m for m in ["error", "error max", "position", "release", "intervals",
+                            "overshoot", "ripple", "peak force"] if m in values[0]]
+    print("| p | mesh | finest | mean DoFs | run time [s] | " + " | ".join(measures) + " |")
+    print("|---" * (5 + len(measures)) + "|")
+    for v in values:
+        print("| %d | %s | %d | %.0f | %.3g | " % (v["p"], v["mesh"], v["finest"], v["dofs"], v["time"])
+              + " | ".join("%d" % v[m] if m == "intervals" else "%.3g" % v[m] for m in measures) + " |")
+
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for p, colour in [(1, "C0"), (2, "C1"), (3, "C2")]:
+        uniform = [v for v in values if v["p"] == p and v["mesh"] == "uniform"]
+        for ax, measure in zip(axes, ["error", "position"]):
+            ax.loglog([v["time"] for v in uniform], [v[measure] for v in uniform], "o-",
+                      color=colour, label="p = %d uniform" % p)
+            for v in values:
+                if v["p"] == p and v["mesh"] != "uniform":
+                    ax.loglog([v["time"]], [v[measure]],
+                              "s" if "recovery" in v["mesh"] else "^",
+                              color=colour, markerfacecolor="none", markersize=9,
+                              label="p = %d %s" % (p, v["mesh"]))
+    by_reference = key in ["hertz", "ball_drop"]
+    axes[0].set_ylabel("contact force error / peak" if by_reference
+                       else "energy-norm error at T / sqrt(E(0))")
+    axes[1].set_ylabel("position error at T" + (" / travel" if by_reference else " [m]"))
+    for ax in axes:
+        ax.set_xlabel("run time (time loop) [s]")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.set_title(key.replace("_", " "))
+    axes[1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig("doc/work_precision_%s.png" % key, dpi=100)
+    print("wrote doc/work_precision_%s.png" % key)
