@@ -32,8 +32,8 @@ Scenes and what is measured (errors relative, except times and positions):
 Adaptive meshes: the coarse mesh of the uniform run two levels coarser (one
 for the two bars, whose coarse mesh across would be less than a cell),
 refined up to the same finest level, every 2 steps (refine 20 %, coarsen
-30 %, the defaults), by the Kelly or the recovery indicator of the velocity; the Hertz drop as in
-benchmarks/adaptivity.py (one global refinement, Kelly of the velocity on
+30 %, the defaults), by the Kelly or the recovery indicator of the
+velocity; the Hertz drop and the ball drop as in benchmarks/adaptivity.py (one global refinement, Kelly of the velocity on
 2 % and the contact zone, half of the cells coarsened).
 
 Writes doc/work_precision_<scene>.png and prints the tables of
@@ -241,6 +241,8 @@ for key, values in results.items():
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     for p, colour in [(1, "C0"), (2, "C1"), (3, "C2")]:
         uniform = [v for v in values if v["p"] == p and v["mesh"] == "uniform"]
+        if not uniform:
+            continue
         for ax, measure in zip(axes, ["error", "position"]):
             ax.loglog([v["time"] for v in uniform], [v[measure] for v in uniform], "o-",
                       color=colour, label="p = %d uniform" % p)
