@@ -68,10 +68,7 @@ main(int argc, char **argv)
       log() << "  rebound velocity within 5% of v0: "
             << check(std::abs(p_end / (L * H) - 1.) <= 0.05) << "\n";
 
-      const auto dofs = s.column("dofs");
-      double     mean = 0.;
-      for (const double d : dofs)
-        mean += d / dofs.size();
+      const double mean = mean_of(s.column("dofs"));
       // (the adapted meshes differ slightly between 1 and 2 ranks: the
       // parallel marking finds its thresholds by bisection; print checks)
       log() << "  fewer DoFs on average than the uniform finest mesh: "

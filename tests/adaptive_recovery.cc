@@ -74,15 +74,9 @@ main(int argc, char **argv)
   const double error_adaptive = adaptive.column("error_energy_norm").back();
   log() << "error at t = " << end << " within 15 % of the uniform mesh's: "
         << check(error_adaptive <= 1.15 * error_uniform) << "\n";
-  const auto mean = [](const std::vector<double> &v) {
-    double sum = 0.;
-    for (const double x : v)
-      sum += x;
-    return sum / v.size();
-  };
   log() << "mean DoFs below half the uniform mesh's: "
-        << check(mean(adaptive.column("dofs")) <
-                 0.5 * mean(uniform.column("dofs")))
+        << check(mean_of(adaptive.column("dofs")) <
+                 0.5 * mean_of(uniform.column("dofs")))
         << "\n";
   log() << "no penetration, also after transfers: "
         << check(max_of(adaptive.column("max_penetration")) <= 1e-12 &&

@@ -149,6 +149,15 @@ namespace testing
     return *std::min_element(v.begin(), v.end());
   }
 
+  inline double
+  mean_of(const std::vector<double> &v)
+  {
+    double sum = 0.;
+    for (const double x : v)
+      sum += x;
+    return sum / v.size();
+  }
+
   /// Largest |c_p . udot| over the rows active in a step and the next one
   /// (persistent contact), and the number of such steps.
   inline std::pair<double, unsigned int>

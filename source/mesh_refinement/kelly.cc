@@ -11,51 +11,32 @@ namespace dyncontact
 {
   namespace MeshRefinement
   {
-    /// Adds the scaled Kelly indicators of @p field.
+    /// Kelly's indicators of @p field.
     template <int dim>
     void
-    add_kelly_indicators(const SimulatorAccess<dim> &access,
-                         const VectorType           &field,
-                         Vector<float>              &indicators)
+    kelly_indicators(const SimulatorAccess<dim> &access,
+                     const VectorType           &field,
+                     Vector<float>              &eta)
     {
-      const SemiDiscreteSystem<dim> &system  = access.get_system();
-      const VectorType               ghosted = system.ghosted(field);
-      Vector<float>                  kelly(indicators.size());
+      const SemiDiscreteSystem<dim> &system = access.get_system();
       KellyErrorEstimator<dim>::estimate(access.get_mapping(),
                                          system.get_dof_handler(),
                                          QGauss<dim - 1>(
                                            system.get_fe().degree + 1),
                                          {},
-                                         ghosted,
-                                         kelly);
-      add_scaled(kelly, indicators, access.get_mpi_communicator());
+                                         system.ghosted(field),
+                                         eta);
     }
 
-
+    template <int dim>
+    class KellyDisplacement
+      : public FieldCriterion<dim, kelly_indicators<dim>, false>
+    {};
 
     template <int dim>
-    class KellyDisplacement : public Interface<dim>
-    {
-    public:
-      void
-      execute(Vector<float> &indicators) const override
-      {
-        add_kelly_indicators(*this, this->get_solution(), indicators);
-      }
-    };
-
-
-
-    template <int dim>
-    class KellyVelocity : public Interface<dim>
-    {
-    public:
-      void
-      execute(Vector<float> &indicators) const override
-      {
-        add_kelly_indicators(*this, this->get_velocity(), indicators);
-      }
-    };
+    class KellyVelocity
+      : public FieldCriterion<dim, kelly_indicators<dim>, true>
+    {};
 
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(KellyDisplacement,
                                              "kelly displacement",

@@ -10,43 +10,25 @@ namespace dyncontact
 {
   namespace MeshRefinement
   {
-    /// Adds the scaled recovery indicators of @p field.
+    /// Zienkiewicz and Zhu's indicators of @p field.
     template <int dim>
     void
-    add_recovery_indicators(const SimulatorAccess<dim> &access,
-                            const VectorType           &field,
-                            Vector<float>              &indicators)
+    recovery_indicators(const SimulatorAccess<dim> &access,
+                        const VectorType           &field,
+                        Vector<float>              &eta)
     {
-      Vector<float> eta(indicators.size());
       access.get_system().recovery_indicators(field, eta);
-      add_scaled(eta, indicators, access.get_mpi_communicator());
     }
 
-
+    template <int dim>
+    class RecoveryDisplacement
+      : public FieldCriterion<dim, recovery_indicators<dim>, false>
+    {};
 
     template <int dim>
-    class RecoveryDisplacement : public Interface<dim>
-    {
-    public:
-      void
-      execute(Vector<float> &indicators) const override
-      {
-        add_recovery_indicators(*this, this->get_solution(), indicators);
-      }
-    };
-
-
-
-    template <int dim>
-    class RecoveryVelocity : public Interface<dim>
-    {
-    public:
-      void
-      execute(Vector<float> &indicators) const override
-      {
-        add_recovery_indicators(*this, this->get_velocity(), indicators);
-      }
-    };
+    class RecoveryVelocity
+      : public FieldCriterion<dim, recovery_indicators<dim>, true>
+    {};
 
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(
       RecoveryDisplacement,

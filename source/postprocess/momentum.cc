@@ -108,16 +108,27 @@ namespace dyncontact
       {
         const SemiDiscreteSystem<dim> &system   = this->get_system();
         const unsigned int             n_bodies = this->get_scene().n_bodies();
-        VectorType                     ones(this->get_solution());
-        ones                          = 1.;
-        const std::vector<double> M_u = body_sums(system,
-                                                  this->get_solution(),
-                                                  n_bodies,
-                                                  this->get_mpi_communicator());
-        const std::vector<double> mass =
-          body_sums(system, ones, n_bodies, this->get_mpi_communicator());
+        const VectorType              &u        = this->get_solution();
+        // M is symmetric and couples neither components nor bodies: the
+        // sum of M u over a body's component is that of m_i u_i with the
+        // row sums m = M 1, and its mass that of m_i (one product)
+        VectorType ones(u), m;
+        ones = 1.;
+        system.matrices().mass_vmult(m, ones);
+        std::vector<double> sums(6 * n_bodies, 0.); // M u, then the masses
+        const std::vector<unsigned char> &slots = system.get_owned_dof_slots();
+        const double *m_values = m.begin(), *u_values = u.begin();
+        for (std::size_t k = 0; k < slots.size(); ++k)
+          {
+            const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
+            sums[slot] += m_values[k] * u_values[k];
+            sums[3 * n_bodies + slot] += m_values[k];
+          }
+        Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
         for (unsigned int k = 0; k < 3 * n_bodies; ++k)
-          row.push_back(mass[k] > 0. ? M_u[k] / mass[k] : 0.);
+          row.push_back(sums[3 * n_bodies + k] > 0. ?
+                          sums[k] / sums[3 * n_bodies + k] :
+                          0.);
       }
     };
 

@@ -58,6 +58,32 @@ namespace dyncontact
     add_scaled(const Vector<float> &eta,
                Vector<float>       &indicators,
                const MPI_Comm       comm);
+
+
+    /**
+     * A criterion whose indicators @p estimate computes from the
+     * displacement, or from the velocity if @p of_velocity (estimate sets
+     * the entries of this rank's cells), added scaled by add_scaled(): the
+     * Kelly and the recovery criteria.
+     */
+    template <int dim,
+              void (*estimate)(const SimulatorAccess<dim> &,
+                               const VectorType &,
+                               Vector<float> &),
+              bool of_velocity>
+    class FieldCriterion : public Interface<dim>
+    {
+    public:
+      void
+      execute(Vector<float> &indicators) const override
+      {
+        Vector<float> eta(indicators.size());
+        estimate(*this,
+                 of_velocity ? this->get_velocity() : this->get_solution(),
+                 eta);
+        add_scaled(eta, indicators, this->get_mpi_communicator());
+      }
+    };
   } // namespace MeshRefinement
 
   extern template class PluginRegistry<MeshRefinement::Interface>;
