@@ -80,6 +80,12 @@ main(int argc, char **argv)
      "subsection Checkpointing\n  set Resume = true\nend\n"},
     {"solver_tolerance_one",
      "subsection Contact solver\n  set Linear solver tolerance = 1\nend\n"},
+    {"matrix_free_step_with_amg",
+     "subsection Contact solver\n  set Step matrix = matrix-free\n"
+     "  set Preconditioner = AMG\nend\n"},
+    {"matrix_free_step_static",
+     "subsection Contact solver\n  set Step matrix = matrix-free\nend\n"
+     "subsection Time integration\n  set Scheme = static\nend\n"},
     {"hertz_in_3d",
      "set Dimension = 3\nsubsection Scene\n  set Name = hertz\nend\n"},
     {"negative_load", testing::scene_prm("hertz", "    set Load = -1\n")},

@@ -19,6 +19,8 @@ namespace dyncontact
   {
     if (H != nullptr)
       H->vmult(y, x);
+    else if (H_operator)
+      H_operator(y, x);
     else
       {
         y = x;
@@ -374,7 +376,8 @@ namespace dyncontact
                          std::vector<char>   &active,
                          std::vector<double> &multipliers) const
   {
-    Assert(H != nullptr || diagonal.size() > 0, ExcInternalError());
+    Assert(H != nullptr || H_operator || diagonal.size() > 0,
+           ExcInternalError());
     active.resize(rows->size(), 0);
     multipliers.assign(rows->size(), 0.);
 

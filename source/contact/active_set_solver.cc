@@ -154,7 +154,26 @@ namespace dyncontact
       "the system without active rows, at most about 150 for a relative "
       "tolerance of 1e-12), and one costs a third to a fifth of an AMG-CG "
       "iteration, without AMG's set-up. The L2 projection with a consistent "
-      "mass keeps AMG.");
+      "mass keeps AMG. With 'Step matrix = matrix-free', 'automatic' is "
+      "Jacobi, and 'AMG' is refused.");
+    prm.declare_entry(
+      "Step matrix",
+      "assembled",
+      Patterns::Selection("assembled|matrix-free"),
+      "How CG applies the step matrix S = M + tau^2/4 A + tau/2 B of the "
+      "dynamic schemes. 'assembled': S is built as a sparse matrix for "
+      "each time step size (and AMG on it, if chosen). 'matrix-free': A "
+      "and B are applied cell by cell by sum factorisation (deal.II's "
+      "MatrixFree) and M as its matrix or lumped diagonal, with Jacobi on "
+      "S's diagonal, which is computed without a matrix: nothing is "
+      "assembled but the mass, and with a lumped mass no sparsity pattern "
+      "is built, so that a mesh adaptation or a new tau costs less, and "
+      "higher degrees cost less per DoF. The solution is the same to the "
+      "solver's tolerance (the statistics of a run agree to round-off). "
+      "Jacobi's iteration count grows with tau c/h (a condition number "
+      "of about 1 + (tau c/h)^2 for linear elements): where tau c/h is "
+      "larger than about 2, or the viscosity dominates the mass, keep "
+      "'assembled' with AMG. Not for the static problem (S = A).");
     prm.leave_subsection();
   }
 
@@ -171,7 +190,14 @@ namespace dyncontact
     preconditioner           = choice == "AMG"    ? Preconditioner::amg :
                                choice == "Jacobi" ? Preconditioner::jacobi :
                                                     Preconditioner::automatic;
+    matrix_free_step         = (prm.get("Step matrix") == "matrix-free");
     prm.leave_subsection();
+    AssertThrow(!(matrix_free_step && preconditioner == Preconditioner::amg),
+                ExcMessage("Contact solver/Preconditioner = AMG needs an "
+                           "assembled step matrix, but Contact solver/Step "
+                           "matrix = matrix-free: set 'Preconditioner' to "
+                           "automatic or Jacobi, or 'Step matrix' to "
+                           "assembled."));
     AssertThrow(linear_tolerance > 0. && linear_tolerance < 1.,
                 ExcMessage("Contact solver/Linear solver tolerance must lie in "
                            "(0, 1); got " +
@@ -206,7 +232,8 @@ namespace dyncontact
     rows                   = &contact_rows;
     Tx.reinit(locally_owned, comm);
     additions.reinit(locally_owned, row_operator.ghost_set(), comm, true);
-    H = nullptr;
+    H          = nullptr;
+    H_operator = nullptr;
   }
 
 
@@ -239,8 +266,9 @@ namespace dyncontact
                               const MatrixType *preconditioner_matrix,
                               const double      lumped_mass_ratio)
   {
-    H        = &matrix;
-    diagonal = matrix_diagonal(matrix);
+    H          = &matrix;
+    H_operator = nullptr;
+    diagonal   = matrix_diagonal(matrix);
     set_diagonal_data(false);
     amg.reset();
 
@@ -303,10 +331,25 @@ namespace dyncontact
 
 
   void
+  ActiveSetSolver::set_operator(const Operator &vmult, const VectorType &d)
+  {
+    H               = nullptr;
+    H_operator      = vmult;
+    diagonal        = d;
+    condition_bound = std::numeric_limits<double>::infinity();
+    set_inverse_diagonal();
+    amg.reset();
+    set_diagonal_data(false);
+  }
+
+
+
+  void
   ActiveSetSolver::set_diagonal_matrix(const VectorType &d)
   {
-    H        = nullptr;
-    diagonal = d;
+    H          = nullptr;
+    H_operator = nullptr;
+    diagonal   = d;
     set_inverse_diagonal();
     amg.reset();
     set_diagonal_data(true);

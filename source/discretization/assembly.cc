@@ -12,7 +12,8 @@
 
 // The assembly of the semi-discrete system: M (or its diagonal), f and the
 // boundary weights w (SemiDiscreteSystem::assemble()), and the matrix
-// a A + b B + m M of the step (assemble_stiffness_matrix()).
+// a A + b B + m M of the step (assemble_stiffness_matrix()) or only the
+// diagonal of a A + b B (stiffness_diagonal()).
 
 namespace dyncontact
 {
@@ -423,6 +424,66 @@ namespace dyncontact
 
   template <int dim>
   void
+  SemiDiscreteSystem<dim>::stiffness_diagonal(VectorType  &diagonal,
+                                              const double a,
+                                              const double b) const
+  {
+    // the diagonal entries of ElasticElement::fill(): for the shape
+    // function phi_k e_c, mu (sum_a H^aa_kk + H^cc_kk) + lambda H^cc_kk,
+    // summed over the cells as the assembled matrix's entries are
+    diagonal.reinit(locally_owned, comm);
+    const QGauss<dim>  quadrature(fe.degree + 1);
+    FEValues<dim>      fe_values(mapping,
+                            scalar_fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int n_nodes       = scalar_fe.n_dofs_per_cell();
+    const auto [component, node]     = components_and_nodes(fe);
+    std::vector<double>                  H(n_nodes * dim), laplace(n_nodes);
+    Vector<double>                       cell_diagonal(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Material &material = materials.at(cell->material_id());
+          const double    mu       = a * material.mu() +
+                            (b != 0. ? b * material.viscous_shear_modulus : 0.);
+          const double lambda = a * material.lambda() +
+                                (b != 0. ? b * material.viscous_lambda : 0.);
+          fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+          // H^cc_kk = int (d_c phi_k)^2
+          std::fill(H.begin(), H.end(), 0.);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int k = 0; k < n_nodes; ++k)
+                {
+                  const Tensor<1, dim> &gradient = fe_values.shape_grad(k, q);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    H[c * n_nodes + k] += gradient[c] * JxW * gradient[c];
+                }
+            }
+          std::fill(laplace.begin(), laplace.end(), 0.);
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              laplace[k] += H[c * n_nodes + k];
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const double H_cc = H[component[i] * n_nodes + node[i]];
+              cell_diagonal(i) = mu * (laplace[node[i]] + H_cc) + lambda * H_cc;
+            }
+          cell->get_dof_indices(dof_indices);
+          // (a locally owned cell's DoFs may be owned elsewhere)
+          diagonal.add(dof_indices, cell_diagonal);
+        }
+    diagonal.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
   SemiDiscreteSystem<dim>::assemble_stiffness_matrix(MatrixType  &matrix,
                                                      const double a,
                                                      const double b,
@@ -499,11 +560,15 @@ namespace dyncontact
 
 
 
-#define DYNCONTACT_INSTANTIATE(dim)                                      \
-  template std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>    \
-  SemiDiscreteSystem<dim>::boundary_tractions(const Scene<dim> &) const; \
-  template void SemiDiscreteSystem<dim>::assemble(const Scene<dim> &);   \
-  template void SemiDiscreteSystem<dim>::assemble_stiffness_matrix(      \
+#define DYNCONTACT_INSTANTIATE(dim)                                       \
+  template std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>     \
+  SemiDiscreteSystem<dim>::boundary_tractions(const Scene<dim> &) const;  \
+  template void SemiDiscreteSystem<dim>::assemble(const Scene<dim> &);    \
+  template void SemiDiscreteSystem<dim>::stiffness_diagonal(VectorType &, \
+                                                            const double, \
+                                                            const double) \
+    const;                                                                \
+  template void SemiDiscreteSystem<dim>::assemble_stiffness_matrix(       \
     MatrixType &, const double, const double, const double) const;
   DYNCONTACT_INSTANTIATE(2)
   DYNCONTACT_INSTANTIATE(3)

@@ -30,12 +30,39 @@ namespace dyncontact
     mutable LAVector                       src;
     mutable LAVector                       dst;
 
+    /// The stress of the form a A + b B at the quadrature points of
+    /// @p phi (its gradients evaluated), submitted for integration:
+    /// 2 mu eps + lambda tr(eps) I with mu = a mu_e + b mu_v, lambda =
+    /// a lambda_e + b lambda_v.
     void
-    apply(const MatrixFree<dim, Number>                &matrix_free,
-          LAVector                                     &dst,
-          const LAVector                               &src,
-          const std::pair<unsigned int, unsigned int>  &cells,
-          const std::vector<std::array<Vectorized, 2>> &moduli) const
+    submit_stress(FEEvaluation<dim, -1, 0, dim, Number> &phi,
+                  const unsigned int                     cell,
+                  const double                           a,
+                  const double                           b) const
+    {
+      const Vectorized two_mu =
+        2. * (a * elastic_moduli[cell][0] + b * viscous_moduli[cell][0]);
+      const Vectorized lambda =
+        a * elastic_moduli[cell][1] + b * viscous_moduli[cell][1];
+      for (const unsigned int q : phi.quadrature_point_indices())
+        {
+          SymmetricTensor<2, dim, Vectorized> stress =
+            phi.get_symmetric_gradient(q);
+          const Vectorized divergence = lambda * trace(stress);
+          stress *= two_mu;
+          for (unsigned int d = 0; d < dim; ++d)
+            stress[d][d] += divergence;
+          phi.submit_symmetric_gradient(stress, q);
+        }
+    }
+
+    void
+    apply(const MatrixFree<dim, Number>               &matrix_free,
+          LAVector                                    &dst,
+          const LAVector                              &src,
+          const std::pair<unsigned int, unsigned int> &cells,
+          const double                                 a,
+          const double                                 b) const
     {
       // runtime degree: deal.II dispatches to its precompiled kernels
       FEEvaluation<dim, -1, 0, dim, Number> phi(matrix_free);
@@ -43,18 +70,7 @@ namespace dyncontact
         {
           phi.reinit(cell);
           phi.gather_evaluate(src, EvaluationFlags::gradients);
-          const Vectorized two_mu = 2. * moduli[cell][0];
-          const Vectorized lambda = moduli[cell][1];
-          for (const unsigned int q : phi.quadrature_point_indices())
-            {
-              SymmetricTensor<2, dim, Vectorized> stress =
-                phi.get_symmetric_gradient(q);
-              const Vectorized divergence = lambda * trace(stress);
-              stress *= two_mu;
-              for (unsigned int d = 0; d < dim; ++d)
-                stress[d][d] += divergence;
-              phi.submit_symmetric_gradient(stress, q);
-            }
+          submit_stress(phi, cell, a, b);
           phi.integrate_scatter(EvaluationFlags::gradients, dst);
         }
     }
@@ -121,20 +137,34 @@ namespace dyncontact
                               const TrilinosWrappers::MPI::Vector &src,
                               const Form                           form) const
   {
+    // (1 mu_e + 0 mu_v is mu_e exactly, and so on)
+    if (form == Form::elastic)
+      vmult(dst, src, 1., 0.);
+    else
+      vmult(dst, src, 0., 1.);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticOperator<dim>::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                              const TrilinosWrappers::MPI::Vector &src,
+                              const double                         a,
+                              const double                         b) const
+  {
     // the owned entries of both vector types are the owned DoFs in
     // increasing order
     AssertDimension(src.locally_owned_size(), data->src.locally_owned_size());
     AssertDimension(dst.locally_owned_size(), data->dst.locally_owned_size());
     std::copy(src.begin(), src.end(), data->src.begin());
-    const auto &moduli =
-      (form == Form::elastic) ? data->elastic_moduli : data->viscous_moduli;
     data->matrix_free
       .template cell_loop<typename Data::LAVector, typename Data::LAVector>(
         [&](const MatrixFree<dim, double>               &matrix_free,
             typename Data::LAVector                     &out,
             const typename Data::LAVector               &in,
             const std::pair<unsigned int, unsigned int> &cells) {
-          data->apply(matrix_free, out, in, cells, moduli);
+          data->apply(matrix_free, out, in, cells, a, b);
         },
         data->dst,
         data->src,

@@ -84,8 +84,12 @@ namespace dyncontact
 
     make_constraints(scene);
     // M, A, B share the sparsity pattern of the unconstrained operator;
-    // constraints are applied by the active-set solver, not by assembly
-    make_sparsity_graph();
+    // constraints are applied by the active-set solver, not by assembly.
+    // Nothing needs it where the mass is lumped and the step matrix is
+    // applied without a matrix.
+    graph.reset();
+    if (parameters.assembled_step_matrix || !parameters.lumped_mass)
+      make_sparsity_graph();
     // a lumped mass is kept as its diagonal only
     if (parameters.lumped_mass)
       {
@@ -320,6 +324,7 @@ namespace dyncontact
   {
     // deal.II's matrix on the shared graph (Epetra counts its references),
     // handed over by an Epetra matrix that only views it
+    Assert(graph != nullptr, ExcInternalError());
     const Epetra_CrsMatrix carrier(View, *graph);
     matrix.reinit(carrier, false);
   }
@@ -507,6 +512,14 @@ namespace dyncontact
                                        const double m) {
       assemble_stiffness_matrix(matrix, a, b, m);
     };
+    system.stiffness_combination_vmult =
+      [this](VectorType &y, const VectorType &x, double a, double b) {
+        elastic_operator.vmult(y, x, a, b);
+      };
+    system.stiffness_combination_diagonal =
+      [this](VectorType &d, double a, double b) {
+        stiffness_diagonal(d, a, b);
+      };
     system.f = &load;
     return system;
   }

@@ -55,7 +55,9 @@ namespace dyncontact
                "elastic (no viscous form)")
          << ", " << (system.matrices().lumped_mass() ? "lumped" : "consistent")
          << " mass\n   solver: active set, CG with "
-         << (integrator.uses_amg() ? "AMG" : "Jacobi");
+         << (integrator.uses_amg() ? "AMG" : "Jacobi")
+         << (integrator.matrix_free() ? " on the matrix-free step operator" :
+                                        "");
     if (const double bound = integrator.condition_bound(); std::isfinite(bound))
       text << " (condition number of S scaled by its diagonal at most "
            << std::setprecision(3) << bound << std::setprecision(6) << ")";
@@ -119,6 +121,7 @@ namespace dyncontact
     input.passed_output_times = time_step_controller.n_passed_output_times();
     input.step_matrices       = step_matrices;
     input.uses_amg            = integrator.uses_amg();
+    input.matrix_free         = integrator.matrix_free();
     input.condition_bound     = integrator.condition_bound();
     const std::string text =
       summary_text(this->get_statistics(), input, statistics_lines(input));

@@ -41,7 +41,8 @@ namespace dyncontact
       }
 
     out << statistics_lines;
-    out << "preconditioner: " << (input.uses_amg ? "AMG" : "Jacobi");
+    out << "preconditioner: " << (input.uses_amg ? "AMG" : "Jacobi")
+        << (input.matrix_free ? " on the matrix-free step operator" : "");
     if (std::isfinite(input.condition_bound))
       out << " (condition number of S scaled by its diagonal at most "
           << std::setprecision(3) << input.condition_bound

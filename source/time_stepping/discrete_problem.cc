@@ -28,9 +28,19 @@ namespace dyncontact
     , time_step_controller(time_step_controller)
   {
     solver_parameters.parse_parameters(prm);
-    system = std::make_unique<SemiDiscreteSystem<dim>>(system_parameters,
-                                                       mapping,
-                                                       comm);
+    AssertThrow(!(scheme.is_static && solver_parameters.matrix_free_step),
+                ExcMessage("Contact solver/Step matrix = matrix-free is for "
+                           "the dynamic schemes (its Jacobi preconditioner "
+                           "needs the mass in S); the static problem "
+                           "(Time integration/Scheme = " +
+                           scheme.name +
+                           ") solves with the stiffness alone and AMG: set "
+                           "'Step matrix' to assembled."));
+    auto discretization = system_parameters;
+    discretization.assembled_step_matrix =
+      scheme.is_static || !solver_parameters.matrix_free_step;
+    system =
+      std::make_unique<SemiDiscreteSystem<dim>>(discretization, mapping, comm);
     typename ContactSetup<dim>::Parameters contact_parameters;
     contact_parameters.parse_parameters(prm);
     contact = std::make_unique<ContactSetup<dim>>(contact_parameters, comm);

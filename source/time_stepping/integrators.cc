@@ -77,18 +77,41 @@ namespace dyncontact
         system.add_mass(preconditioner,
                         1e-2 * S.linfty_norm() / system.mass_linfty_norm());
         solver.set_matrix(S, &preconditioner);
+        step_matrix->diagonal = matrix_diagonal(S);
       }
     else
       {
-        // S = M + tau^2/4 A + tau/2 B, assembled cell by cell
-        system.assemble_stiffness(S,
-                                  tau * tau / 4.,
-                                  system.viscous() ? tau / 2. : 0.,
-                                  1.);
-        // how far the stiffness and viscosity outweigh the mass in S
-        const VectorType S_diagonal = matrix_diagonal(S);
+        // S = M + tau^2/4 A + tau/2 B
+        const double a = tau * tau / 4., b = system.viscous() ? tau / 2. : 0.;
         const VectorType M_diagonal =
           system.lumped_mass() ? *system.M_lumped : matrix_diagonal(*system.M);
+        VectorType &S_diagonal = step_matrix->diagonal;
+        if (matrix_free())
+          {
+            // applied cell by cell: (a A + b B) x + M x
+            S_diagonal.reinit(locally_owned, comm);
+            system.stiffness_combination_diagonal(S_diagonal, a, b);
+            S_diagonal += M_diagonal;
+            step_matrix->stiffness_part.reinit(locally_owned, comm);
+            StepMatrix *const step = step_matrix.get();
+            solver.set_operator(
+              [this, step, a, b](VectorType &y, const VectorType &x) {
+                system.stiffness_combination_vmult(step->stiffness_part,
+                                                   x,
+                                                   a,
+                                                   b);
+                system.mass_vmult(y, x);
+                y += step->stiffness_part;
+              },
+              S_diagonal);
+          }
+        else
+          {
+            // assembled cell by cell
+            system.assemble_stiffness(S, a, b, 1.);
+            S_diagonal = matrix_diagonal(S);
+          }
+        // how far the stiffness and viscosity outweigh the mass in S
         const double *S_ii = S_diagonal.begin(), *M_ii = M_diagonal.begin();
         double        ratio = 1.;
         for (unsigned int k = 0; k < S_diagonal.locally_owned_size(); ++k)
@@ -97,11 +120,12 @@ namespace dyncontact
         step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
         // (the bound of S's Jacobi-scaled condition number needs a lumped
         // mass)
-        solver.set_matrix(S,
-                          nullptr,
-                          system.lumped_mass() ?
-                            step_matrix->inertia_ratio :
-                            std::numeric_limits<double>::infinity());
+        if (!matrix_free())
+          solver.set_matrix(S,
+                            nullptr,
+                            system.lumped_mass() ?
+                              step_matrix->inertia_ratio :
+                              std::numeric_limits<double>::infinity());
       }
     return step_matrix;
   }

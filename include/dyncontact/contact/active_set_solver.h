@@ -12,6 +12,7 @@
 #include <dyncontact/contact/contact_rows.h>
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -75,6 +76,10 @@ namespace dyncontact
         jacobi
       };
       Preconditioner preconditioner = Preconditioner::automatic;
+
+      /// Whether the time step's matrix S is applied without being
+      /// assembled (then preconditioned by Jacobi; 'Step matrix').
+      bool matrix_free_step = false;
       /// The bound of the condition number of diag(H)^{-1} H up to which
       /// 'automatic' takes Jacobi: CG on H then needs at most about
       /// sqrt(100)/2 ln(2 sqrt(100)/1e-12) = 150 iterations for a relative
@@ -178,6 +183,16 @@ namespace dyncontact
     {
       return condition_bound;
     }
+
+    /// y = H x for an H that is not stored.
+    using Operator = std::function<void(VectorType &y, const VectorType &x)>;
+
+    /**
+     * Sets H, applied by @p vmult without a matrix, with its @p diagonal
+     * (copied); CG is preconditioned by Jacobi.
+     */
+    void
+    set_operator(const Operator &vmult, const VectorType &diagonal);
 
     /**
      * Sets H = diag(@p diagonal), a lumped mass (copied);
@@ -326,8 +341,10 @@ namespace dyncontact
     const ContactRows *rows                   = nullptr;
     ContactRowOperator row_operator;
 
-    /// H, nullptr if it is diagonal (then given by @p diagonal alone).
-    const MatrixType *H         = nullptr;
+    /// H, nullptr if it is diagonal (then given by @p diagonal alone) or
+    /// applied by H_operator.
+    const MatrixType *H = nullptr;
+    Operator          H_operator;
     bool              pointwise = false;
     /// Diagonal of H (owned entries) and its value at each row's
     /// eliminated DoF (the scaling c of the active-set criterion); the

@@ -28,9 +28,10 @@ namespace dyncontact
    * and the viscous form b(u, v) (the same with mu_v, lambda_v) applied
    * without a matrix (deal.II's MatrixFree, sum factorisation, Gauss
    * quadrature of p + 1 points per direction as in the assembly): A x and
-   * B x for the right-hand side and the energy of every step. The time
-   * step's matrix S is assembled; A and B are never stored, which saves one
-   * value per matrix entry.
+   * B x for the right-hand side and the energy of every step, and
+   * a A + b B for a step matrix S that is not assembled
+   * ('Contact solver/Step matrix = matrix-free'). A and B are never stored,
+   * which saves one value per matrix entry.
    *
    * Without hanging nodes this is the unconstrained operator, as assembled
    * (the constraints are the active-set solver's). With hanging nodes,
@@ -66,6 +67,14 @@ namespace dyncontact
     vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src,
           const Form                           form) const;
+
+    /// dst = (a A + b B) src in one pass over the cells (the elastic form
+    /// with the moduli a mu + b mu_v, a lambda + b lambda_v).
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src,
+          const double                         a,
+          const double                         b) const;
 
     /**
      * Zienkiewicz and Zhu's indicator of @p field (an owned vector of the

@@ -73,7 +73,14 @@ namespace dyncontact
     /// matrix = a A + b B + m M, on the sparsity pattern of the
     /// unconstrained operator (which the matrix is given).
     std::function<void(MatrixType &matrix, double a, double b, double m)>
-                      assemble_stiffness;
+      assemble_stiffness;
+    /// y = (a A + b B) x in one pass over the cells, without a matrix.
+    std::function<void(VectorType &y, const VectorType &x, double a, double b)>
+      stiffness_combination_vmult;
+    /// d = the diagonal of a A + b B (the assembled matrix's), without a
+    /// matrix.
+    std::function<void(VectorType &d, double a, double b)>
+                      stiffness_combination_diagonal;
     const VectorType *f = nullptr;
 
     /// Whether there is a viscous form B.
@@ -130,6 +137,10 @@ namespace dyncontact
       unsigned int degree = 1;
       /// Time integration/Mass matrix = lumped (TimeIntegrationParameters).
       bool lumped_mass = true;
+      /// Whether matrices a A + b B + m M are assembled (Contact solver/Step
+      /// matrix = assembled, or a static problem); else a lumped mass needs
+      /// no sparsity pattern, and none is built.
+      bool assembled_step_matrix = true;
     };
 
     SemiDiscreteSystem(const Parameters   &parameters,
@@ -268,6 +279,11 @@ namespace dyncontact
     {
       elastic_operator.recovery_indicators(field, indicators);
     }
+    /// @p diagonal = the diagonal of a A + b B, as the assembled matrix
+    /// has it (cell by cell from the shape gradients, without a matrix).
+    void
+    stiffness_diagonal(VectorType &diagonal, double a, double b) const;
+
     /// @p matrix = a A + b B + m M, assembled cell by cell on the sparsity
     /// pattern of the unconstrained operator (a lumped M on the diagonal in
     /// the cell loop, a consistent M added afterwards).

@@ -32,7 +32,9 @@ namespace dyncontact
     /// else Jacobi, and for Jacobi the bound of the condition number of S
     /// scaled by its diagonal that 'automatic' decided by (infinite if the
     /// choice was not automatic).
-    bool   uses_amg        = true;
+    bool uses_amg = true;
+    /// whether S is applied without a matrix
+    bool   matrix_free     = false;
     double condition_bound = 0.;
   };
 

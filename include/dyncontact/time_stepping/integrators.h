@@ -176,7 +176,14 @@ namespace dyncontact
     double
     step_matrix_diagonal(const types::global_dof_index i) const
     {
-      return current->S.diag_element(i);
+      return current->diagonal(i);
+    }
+
+    /// Whether S is applied without a matrix ('Contact solver/Step matrix').
+    bool
+    matrix_free() const
+    {
+      return solver_parameters.matrix_free_step && !is_static;
     }
 
     /// How many S (with AMG) of tau levels are kept.
@@ -189,9 +196,14 @@ namespace dyncontact
     /// S for one tau with its active-set solver (which holds the AMG).
     struct StepMatrix
     {
-      double     tau           = 0.;
-      double     inertia_ratio = 1.;
+      double tau           = 0.;
+      double inertia_ratio = 1.;
+      /// S, empty where it is applied without a matrix
       MatrixType S;
+      /// S's diagonal (owned entries)
+      VectorType diagonal;
+      /// the matrix-free S x: workspace of (tau^2/4 A + tau/2 B) x
+      mutable VectorType stiffness_part;
       /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
       MatrixType                       preconditioner;
       std::unique_ptr<ActiveSetSolver> solver;
@@ -348,6 +360,13 @@ namespace dyncontact
     uses_amg() const
     {
       return operators.uses_amg();
+    }
+
+    /// StepOperators::matrix_free().
+    bool
+    matrix_free() const
+    {
+      return operators.matrix_free();
     }
 
     /// StepOperators::condition_bound().
