@@ -10,13 +10,16 @@
 // in the cell loop, once per row. (The sparsity pattern comes from the scalar
 // element's where the vector DoFs are the scalar ones expanded, as for degrees
 // 1 and 2, and from the vector element's otherwise, as for degree 3: an entry
-// missing from either would stop the assembly.)
+// missing from either would stop the assembly.) Also what 'Contact
+// solver/Step matrix = matrix-free' uses: a A + b B in one pass, and its
+// diagonal computed cell by cell without the matrix.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <dyncontact/contact/active_set_solver.h>
 #include <dyncontact/core/parameter_file.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
@@ -126,6 +129,27 @@ check(const unsigned int degree)
           << ": " << (d <= tolerance ? "OK" : "FAILED")
           << (d <= tolerance ? "" : " (" + std::to_string(d) + ")") << "\n";
     }
+
+  // 'Contact solver/Step matrix = matrix-free': a A + b B in one pass over
+  // the cells, and its diagonal computed without the matrix (the same as
+  // the assembled matrix's, hanging DoFs included)
+  MatrixType matrix;
+  system.assemble_stiffness_matrix(matrix, 0.3, 0.2, 0.);
+  matrix.vmult(y_matrix, x);
+  system.matrices().stiffness_combination_vmult(y_free, x, 0.3, 0.2);
+  const double combined =
+    std::abs(w * y_matrix - w * y_free) / (w.l2_norm() * y_matrix.l2_norm());
+  out << "  0.3 A + 0.2 B in one pass: matrix and matrix-free agree to "
+      << tolerance << ": " << (combined <= tolerance ? "OK" : "FAILED") << "\n";
+  VectorType       diagonal;
+  const VectorType reference = matrix_diagonal(matrix);
+  system.stiffness_diagonal(diagonal, 0.3, 0.2);
+  diagonal -= reference;
+  const double diagonal_error =
+    diagonal.linfty_norm() / reference.linfty_norm();
+  out << "  its diagonal without the matrix agrees with the matrix's to "
+      << tolerance << ": " << (diagonal_error <= tolerance ? "OK" : "FAILED")
+      << "\n";
 }
 
 int

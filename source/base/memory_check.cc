@@ -56,6 +56,7 @@ namespace dyncontact
   check_mesh_fits_in_memory(const double       n_cells,
                             const int          dim,
                             const unsigned int degree,
+                            const bool         stored_step_matrix,
                             const double       n_coarse_cells,
                             const std::string &remedy,
                             const MPI_Comm     comm)
@@ -66,7 +67,8 @@ namespace dyncontact
     // (12 bytes for each of dim (p+2)^dim entries of a row on average) and
     // 500 bytes of vectors, DoF and mesh data (3D, degree 1, at 1e6 DoFs:
     // 1.47 kB against 1.78 kB measured, libraries apart)
-    const double bytes_per_dof = 12. * dim * std::pow(degree + 2., dim) + 500.;
+    const double bytes_per_dof =
+      (stored_step_matrix ? 12. * dim * std::pow(degree + 2., dim) : 0.) + 500.;
     const double estimate =
       bytes_per_dof * dofs_per_cell * n_cells + 2e3 * n_coarse_cells * n_ranks;
     const double available = available_memory(comm);

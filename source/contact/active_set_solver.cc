@@ -165,15 +165,17 @@ namespace dyncontact
       "each time step size (and AMG on it, if chosen). 'matrix-free': A "
       "and B are applied cell by cell by sum factorisation (deal.II's "
       "MatrixFree) and M as its matrix or lumped diagonal, with Jacobi on "
-      "S's diagonal, which is computed without a matrix: nothing is "
+      "S's diagonal, which is computed without a matrix (the L2 projection "
+      "with a consistent mass keeps AMG on M): nothing is "
       "assembled but the mass, and with a lumped mass no sparsity pattern "
       "is built, so that a mesh adaptation or a new tau costs less, and "
       "higher degrees cost less per DoF. The solution is the same to the "
-      "solver's tolerance (the statistics of a run agree to round-off). "
-      "Jacobi's iteration count grows with tau c/h (a condition number "
-      "of about 1 + (tau c/h)^2 for linear elements): where tau c/h is "
-      "larger than about 2, or the viscosity dominates the mass, keep "
-      "'assembled' with AMG. Not for the static problem (S = A).");
+      "solver's tolerance. "
+      "Jacobi's iteration count grows with tau c/h and with the "
+      "viscosity: where 'automatic' would take AMG for the assembled S "
+      "(the banner's bound of the condition number above 100, tau c/h "
+      "above about 7 for linear elements), keep 'assembled'. Not for the "
+      "static problem (S = A).");
     prm.leave_subsection();
   }
 

@@ -228,6 +228,18 @@ namespace dyncontact
 
 
 
+    /// The moduli (mu, lambda) of the form a A + b B for @p material.
+    std::pair<double, double>
+    combined_moduli(const Material &material, const double a, const double b)
+    {
+      return {a * material.mu() +
+                (b != 0. ? b * material.viscous_shear_modulus : 0.),
+              a * material.lambda() +
+                (b != 0. ? b * material.viscous_lambda : 0.)};
+    }
+
+
+
     /**
      * The element matrix mu (2 eps : eps) + lambda (div div) of FE_Q^dim
      * from the scalar gradients (a third of the work of the vector
@@ -446,11 +458,8 @@ namespace dyncontact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const Material &material = materials.at(cell->material_id());
-          const double    mu       = a * material.mu() +
-                            (b != 0. ? b * material.viscous_shear_modulus : 0.);
-          const double lambda = a * material.lambda() +
-                                (b != 0. ? b * material.viscous_lambda : 0.);
+          const auto [mu, lambda] =
+            combined_moduli(materials.at(cell->material_id()), a, b);
           fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
           // H^cc_kk = int (d_c phi_k)^2
           std::fill(H.begin(), H.end(), 0.);
@@ -513,12 +522,8 @@ namespace dyncontact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const Material &material = materials.at(cell->material_id());
-          // the moduli of a A + b B
-          const double mu = a * material.mu() +
-                            (b != 0. ? b * material.viscous_shear_modulus : 0.);
-          const double lambda = a * material.lambda() +
-                                (b != 0. ? b * material.viscous_lambda : 0.);
+          const auto [mu, lambda] =
+            combined_moduli(materials.at(cell->material_id()), a, b);
           fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
 
           // a translation of the cell before has the same H (deal.II's

@@ -375,6 +375,7 @@ namespace dyncontact
                                       Utilities::MPI::sum(flagged, comm),
                                   dim,
                                   this->polynomial_degree,
+                                  this->stored_step_matrix,
                                   n_coarse_cells(),
                                   "Scene/" + subsection +
                                     "/Contact zone refinements (now " +

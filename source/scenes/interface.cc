@@ -111,6 +111,11 @@ namespace dyncontact
     scene->scene_name                 = name;
     scene->input_directory            = input_directory;
     scene->polynomial_degree          = prm.get_integer("Polynomial degree");
+    // (read, not owned: the memory estimates of the mesh need to know
+    // whether S will be stored)
+    prm.enter_subsection("Contact solver");
+    scene->stored_step_matrix = (prm.get("Step matrix") == "assembled");
+    prm.leave_subsection();
     scene->parse_parameters(prm);
     for (const std::string &subsection : scene->material_subsections())
       {
@@ -183,6 +188,7 @@ namespace dyncontact
     check_mesh_fits_in_memory(coarse * std::pow(2., dim * global_refinements),
                               dim,
                               degree,
+                              scene.stores_step_matrix(),
                               coarse,
                               remedy,
                               comm);
@@ -195,6 +201,7 @@ namespace dyncontact
                                         std::pow(2., dim),
                                       dim,
                                       degree,
+                                      scene.stores_step_matrix(),
                                       triangulation.n_cells(0),
                                       remedy,
                                       comm);

@@ -23,7 +23,9 @@ namespace dyncontact
    * with elements of degree @p degree, of which @p n_coarse_cells are coarse
    * cells (every rank stores the whole coarse mesh). The estimate is a
    * lower bound: per degree of freedom 12 bytes for each of the step
-   * matrix's dim (p+2)^dim entries of a row on average, and 500 bytes of
+   * matrix's dim (p+2)^dim entries of a row on average (if
+   * @p stored_step_matrix: 'Contact solver/Step matrix = assembled'), and
+   * 500 bytes of
    * vectors, DoF and mesh data (1.47 kB in 3D for degree 1, where 1.78 kB
    * were measured at 1e6 DoFs), and 2 kB per coarse cell and rank; the message
    * names the estimate, the available memory and @p remedy (the parameters
@@ -33,6 +35,7 @@ namespace dyncontact
   check_mesh_fits_in_memory(const double       n_cells,
                             const int          dim,
                             const unsigned int degree,
+                            const bool         stored_step_matrix,
                             const double       n_coarse_cells,
                             const std::string &remedy,
                             const MPI_Comm     comm);

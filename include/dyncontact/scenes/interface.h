@@ -270,12 +270,22 @@ namespace dyncontact
     std::string
     subsection() const;
 
+    /// Whether the memory estimates count a stored step matrix.
+    bool
+    stores_step_matrix() const
+    {
+      return stored_step_matrix;
+    }
+
   protected:
     /// The folder of the prm file: relative file names refer to it.
     std::string input_directory;
 
     /// The degree of the finite elements (for memory estimates).
     unsigned int polynomial_degree = 1;
+    /// Whether the step matrix is stored ('Contact solver/Step matrix =
+    /// assembled'; for memory estimates).
+    bool stored_step_matrix = true;
 
   private:
     std::string           scene_name;

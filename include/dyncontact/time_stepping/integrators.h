@@ -76,6 +76,11 @@ namespace dyncontact
                   const ActiveSetSolver::NearNullSpace &near_null_space,
                   const MPI_Comm                        comm);
 
+    /// Not copied nor moved: a matrix-free S refers to these operators.
+    StepOperators(const StepOperators &) = delete;
+    StepOperators &
+    operator=(const StepOperators &) = delete;
+
     double
     tau() const
     {
