@@ -58,7 +58,11 @@ namespace dyncontact
          << (integrator.uses_amg() ? "AMG" : "Jacobi")
          << (integrator.matrix_free() ? " on the matrix-free step operator" :
                                         "");
-    if (const double bound = integrator.condition_bound(); std::isfinite(bound))
+    if (integrator.matrix_free())
+      text << " (largest S_ii/M_ii " << std::setprecision(3)
+           << integrator.inertia_ratio() << std::setprecision(6) << ")";
+    else if (const double bound = integrator.condition_bound();
+             std::isfinite(bound))
       text << " (condition number of S scaled by its diagonal at most "
            << std::setprecision(3) << bound << std::setprecision(6) << ")";
     text << "\n   time: ";
@@ -122,6 +126,7 @@ namespace dyncontact
     input.step_matrices       = step_matrices;
     input.uses_amg            = integrator.uses_amg();
     input.matrix_free         = integrator.matrix_free();
+    input.inertia_ratio       = integrator.inertia_ratio();
     input.condition_bound     = integrator.condition_bound();
     const std::string text =
       summary_text(this->get_statistics(), input, statistics_lines(input));

@@ -43,7 +43,10 @@ namespace dyncontact
     out << statistics_lines;
     out << "preconditioner: " << (input.uses_amg ? "AMG" : "Jacobi")
         << (input.matrix_free ? " on the matrix-free step operator" : "");
-    if (std::isfinite(input.condition_bound))
+    if (input.matrix_free)
+      out << " (largest S_ii/M_ii " << std::setprecision(3)
+          << input.inertia_ratio << std::setprecision(6) << ")";
+    else if (std::isfinite(input.condition_bound))
       out << " (condition number of S scaled by its diagonal at most "
           << std::setprecision(3) << input.condition_bound
           << std::setprecision(6) << ")";

@@ -33,8 +33,9 @@ namespace dyncontact
     /// scaled by its diagonal that 'automatic' decided by (infinite if the
     /// choice was not automatic).
     bool uses_amg = true;
-    /// whether S is applied without a matrix
+    /// whether S is applied without a matrix, and then max_i S_ii / M_ii
     bool   matrix_free     = false;
+    double inertia_ratio   = 1.;
     double condition_bound = 0.;
   };
 
