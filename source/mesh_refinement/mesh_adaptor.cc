@@ -1,10 +1,17 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <boost/serialization/utility.hpp>
 
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/time_step_controller.h>
 
+#include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -54,6 +61,18 @@ namespace dyncontact
                       Patterns::Double(0., 1.),
                       "Fraction of the cells with the smallest indicators "
                       "that are coarsened at each adaptation, in [0, 1].");
+    prm.declare_entry(
+      "Front widening",
+      "0",
+      Patterns::Double(0., 100.),
+      "Cells whose centres lie within w c tau n of the centre of a cell "
+      "the indicators refine are refined too, and none of them coarsened, "
+      "where w is this value, c the fastest wave speed sqrt((lambda + "
+      "2 mu)/rho) of the bodies, tau the Time step (the Maximum time step "
+      "with adaptive tau) and n the Refinement interval: w = 1 widens the "
+      "refined zone by the distance a wave front travels until the next "
+      "adaptation, so that the front stays inside it. Dimensionless, 0 to "
+      "100; 0: no widening.");
     std::string documentation;
     for (const auto &info :
          PluginRegistry<MeshRefinement::Interface>::plugins())
@@ -87,6 +106,7 @@ namespace dyncontact
     refine_fraction     = prm.get_double("Refine fraction");
     coarsen_fraction    = prm.get_double("Coarsen fraction");
     initial_refinements = prm.get_integer("Initial contact refinements");
+    front_widening      = prm.get_double("Front widening");
     const auto selected = Utilities::split_string_list(prm.get("Criteria"));
     prm.leave_subsection();
     AssertThrow(min_level <= max_level,
@@ -134,6 +154,135 @@ namespace dyncontact
 
 
 
+  namespace
+  {
+    /// Half the edge of @p cell (of a square or cube of its diameter).
+    template <typename Cell>
+    double
+    half_size(const Cell &cell)
+    {
+      return 0.5 * cell->diameter() /
+             std::sqrt(double(Cell::AccessorType::dimension));
+    }
+
+
+
+    /**
+     * Flags for refinement every active cell of level l that comes within
+     * @p distance times max(1, @p max_level - l) of a cell flagged for
+     * refinement, and clears the coarsen flags of those cells: a cell is
+     * refined by one level per adaptation, so a cell k levels below the
+     * maximum must be refined k adaptations before a front arrives. A cell
+     * of centre x and half size r is within d of a flagged cell (x', r') if
+     * |x - x'| - r - r' <= d (the distance of the two cells' boxes along
+     * the line of their centres).
+     * The flags spread from face neighbour to face neighbour (and to the
+     * ghost cells of the other ranks, round by round), each cell keeping
+     * the nearest flagged cell that reached it, until no cell is reached
+     * any more: the work is proportional to the cells of the widened zone,
+     * the rounds to its width in cells.
+     */
+    template <int dim>
+    void
+    widen_refinement(parallel::distributed::Triangulation<dim> &triangulation,
+                     const double                               distance,
+                     const unsigned int                         max_level)
+    {
+      using Cell   = typename Triangulation<dim>::active_cell_iterator;
+      using Origin = std::pair<Point<dim>, double>; // centre, half size
+      const MPI_Comm      comm = triangulation.get_communicator();
+      const unsigned int  n    = triangulation.n_active_cells();
+      std::vector<Origin> origin(n);
+      std::vector<double> reach(n, std::numeric_limits<double>::max());
+      std::vector<char>   changed(n, 0);
+      std::vector<Cell>   front;
+      const auto          limit = [&](const int level) {
+        return distance * std::max(1, int(max_level) - level);
+      };
+      // the flags spread as far as the coarsest cell's limit
+      int coarsest = int(max_level);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          coarsest = std::min(coarsest, cell->level());
+      const double spread = limit(Utilities::MPI::min(coarsest, comm));
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->refine_flag_set())
+          {
+            const unsigned int i = cell->active_cell_index();
+            origin[i]            = {cell->center(), half_size(cell)};
+            reach[i]             = -std::numeric_limits<double>::max();
+            changed[i]           = 1;
+            front.push_back(cell);
+          }
+
+      // @p cell reached from @p from: true if it is within the spread and
+      // nearer than what reached it before
+      const auto reached = [&](const Cell &cell, const Origin &from) {
+        const unsigned int i = cell->active_cell_index();
+        const double       d =
+          cell->center().distance(from.first) - from.second - half_size(cell);
+        if (d > spread || d >= reach[i])
+          return false;
+        origin[i]  = from;
+        reach[i]   = d;
+        changed[i] = 1;
+        return true;
+      };
+
+      const bool parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
+      while (Utilities::MPI::max(front.size(), comm) > 0)
+        {
+          // what changed on this rank's cells, to the ranks that see them as
+          // ghosts
+          if (parallel)
+            GridTools::exchange_cell_data_to_ghosts<Origin>(
+              triangulation,
+              [&](const Cell &cell) {
+                return changed[cell->active_cell_index()] ?
+                         std_cxx17::optional<Origin>(
+                           origin[cell->active_cell_index()]) :
+                         std_cxx17::optional<Origin>();
+              },
+              [&](const Cell &cell, const Origin &from) {
+                if (reached(cell, from))
+                  front.push_back(cell);
+              });
+          for (const Cell &cell : front)
+            changed[cell->active_cell_index()] = 0;
+
+          std::vector<Cell> next;
+          const auto visit = [&](const Cell &neighbor, const Cell &cell) {
+            if (neighbor->is_locally_owned() &&
+                reached(neighbor, origin[cell->active_cell_index()]))
+              next.push_back(neighbor);
+          };
+          for (const Cell &cell : front)
+            for (const unsigned int f : cell->face_indices())
+              if (!cell->at_boundary(f))
+                {
+                  const auto neighbor = cell->neighbor(f);
+                  if (neighbor->has_children())
+                    for (unsigned int s = 0; s < cell->face(f)->n_children();
+                         ++s)
+                      visit(cell->neighbor_child_on_subface(f, s), cell);
+                  else
+                    visit(neighbor, cell);
+                }
+          front.swap(next);
+        }
+
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            reach[cell->active_cell_index()] <= limit(cell->level()))
+          {
+            cell->clear_coarsen_flag();
+            cell->set_refine_flag();
+          }
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   MeshAdaptor<dim>::mark_cells(
@@ -159,6 +308,9 @@ namespace dyncontact
               indicators[cell->active_cell_index()] == 0.f)
             cell->clear_refine_flag();
       }
+    const double distance = widening_distance();
+    if (distance > 0.)
+      widen_refinement(triangulation, distance, max_level);
     for (const auto &criterion : criteria)
       criterion->tag_additional_cells();
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -169,6 +321,31 @@ namespace dyncontact
           if (cell->level() <= int(min_level))
             cell->clear_coarsen_flag();
         }
+  }
+
+
+
+  template <int dim>
+  double
+  MeshAdaptor<dim>::widening_distance() const
+  {
+    if (front_widening == 0. || interval == 0)
+      return 0.;
+    const auto &scene      = this->get_scene();
+    double      wave_speed = 0.;
+    for (unsigned int body = 0; body < scene.n_bodies(); ++body)
+      {
+        const Material &material = scene.material(body);
+        wave_speed =
+          std::max(wave_speed,
+                   std::sqrt((material.lambda() + 2. * material.mu()) /
+                             material.density));
+      }
+    const TimeStepController &controller = this->get_time_step_controller();
+    const double              tau        = controller.is_adaptive() ?
+                                             controller.get_maximum_timestep() :
+                                             controller.get_timestep();
+    return front_widening * wave_speed * tau * interval;
   }
 
 

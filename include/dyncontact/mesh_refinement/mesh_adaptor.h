@@ -22,6 +22,10 @@ namespace dyncontact
    * the chosen criteria (plugins: the indicators of all criteria are added,
    * the top fraction refined and the bottom fraction coarsened, then each
    * criterion flags the cells it insists on), within the level bounds.
+   * With "Front widening" w > 0, every cell within w c tau n of a cell the
+   * indicators refine (c the fastest wave speed of the bodies, n the
+   * interval) is refined too and none of them coarsened: the distance a
+   * wave front travels until the next adaptation (widen_refinement()).
    * Before t = 0 the contact zone is refined "Initial contact refinements"
    * times. What a transfer of the state did is the simulator's
    * MeshTransfer record.
@@ -82,6 +86,14 @@ namespace dyncontact
     void
     mark_contact_zone() const;
 
+    /// The distance, in m, by which the refined zone is widened: "Front
+    /// widening" times the distance the fastest wave, sqrt((lambda + 2 mu) /
+    /// rho) of the stiffest body, travels in "Refinement interval" steps of
+    /// the time step (the Maximum time step with adaptive tau); 0 without
+    /// widening.
+    double
+    widening_distance() const;
+
   private:
     unsigned int             interval            = 0;
     unsigned int             min_level           = 0;
@@ -89,6 +101,7 @@ namespace dyncontact
     double                   refine_fraction     = 0.2;
     double                   coarsen_fraction    = 0.3;
     unsigned int             initial_refinements = 0;
+    double                   front_widening      = 0.;
     std::vector<std::string> criterion_names;
 
     std::vector<std::unique_ptr<MeshRefinement::Interface<dim>>> criteria;
