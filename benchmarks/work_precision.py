@@ -25,16 +25,17 @@ Scenes and what is measured (errors relative, except times and positions):
   T relative to its largest displacement in the reference, the peak force's
   error. The load keeps the bodies in contact: no release time.
 - ball_drop: the 3D ball drop of prm/ball_drop_adaptive.prm (to 1.5 s,
-  tau = 0.02 s) in the same way, p = 1 at 1 and 2 global refinements and
-  adaptive up to 2, p = 2 at 1, against p = 1 at 3 global refinements
-  (1.2e5 DoFs; a p = 2 reference there, 8.8e5 DoFs, takes about 100 s per
-  contact step on one core), with the release-time error.
+  tau = 0.02 s) in the same way, p = 1 and 2 at 1 and 2 global
+  refinements and adaptive up to 2, against p = 1 at 3 global refinements
+  (1.2e5 DoFs), with the release-time error.
 Adaptive meshes: the coarse mesh of the uniform run two levels coarser (one
 for the two bars, whose coarse mesh across would be less than a cell),
 refined up to the same finest level, every 2 steps (refine 20 %, coarsen
 30 %, the defaults), by the Kelly or the recovery indicator of the
 velocity; the Hertz drop and the ball drop as in benchmarks/adaptivity.py (one global refinement, Kelly of the velocity on
-2 % and the contact zone, half of the cells coarsened).
+2 % and the contact zone, half of the cells coarsened), every 2 and every
+16 steps. p >= 2 runs apply S matrix-free (Contact solver/Step matrix =
+matrix-free, Jacobi), p = 1 runs assemble it.
 
 Writes doc/work_precision_<scene>.png and prints the tables of
 doc/results.md. Usage, from the repository's top folder after tools/setup.sh:
@@ -96,14 +97,19 @@ def scene_prm(base, scene, entries):
         scene, "".join("    set %s = %s\n" % e for e in entries))
 
 
-def mesh_prm(p, tau, global_refinements=None, adaptive=None):
+def mesh_prm(p, tau, global_refinements=None, adaptive=None, interval=2):
     text = "set Polynomial degree = %d\n" % p
+    if p >= 2:
+        # the matrix-free S with Jacobi: cheaper than the assembled S for
+        # p >= 2 (benchmarks/step_operator.py), the same results
+        text += "subsection Contact solver\n  set Step matrix = matrix-free\nend\n"
     text += "subsection Time integration\n  set Time step = %.17g\nend\n" % tau
     if global_refinements is not None:
         text += "subsection Mesh\n  set Initial global refinements = %d\nend\n" % global_refinements
     if adaptive:
-        text += ("subsection Mesh refinement\n  set Refinement interval = 2\n"
-                 "  set Maximum level = %d\n  set Minimum level = %d\n"
+        text += ("subsection Mesh refinement\n  set Refinement interval = %d\n"
+                 % interval)
+        text += ("  set Maximum level = %d\n  set Minimum level = %d\n"
                  "  set Initial contact refinements = %d\n"
                  "  set Criteria = %s\n  set Refine fraction = %g\n"
                  "  set Coarsen fraction = %g\nend\n" % adaptive)
@@ -172,12 +178,14 @@ if not only or "two_bars" in only:
                              ("Cells across body 2", cells // 10 + 1)], 1,
               [("adaptive recovery", "recovery velocity")])
 
-def reference_scene(key, text, levels, reference_p, reference_level, tau, adaptive_min):
-    """Uniform runs per p at the given levels, one adaptive run per p up to
+def reference_scene(key, text, levels, reference_p, reference_level, tau, adaptive_min,
+                    intervals):
+    """Uniform runs per p at the given levels, adaptive runs per p up to
     the finest of them if that is above adaptive_min (from global level
     adaptive_min, Kelly of the velocity on 2 % and the contact zone, half
-    coarsened), against a uniform run of degree reference_p at
-    reference_level with the same tau."""
+    coarsened), one for each refinement interval in intervals, against a
+    uniform run of degree reference_p at reference_level with the same
+    tau."""
     reference_rows, reference_summary = run("%s-reference" % key,
                                             text + mesh_prm(reference_p, tau, reference_level))
     f_ref = column(reference_rows, "contact_force")
@@ -209,24 +217,30 @@ def reference_scene(key, text, levels, reference_p, reference_level, tau, adapti
         level = levels[p][-1]
         if level <= adaptive_min:
             continue
-        rows, summary = run("%s-p%d-adaptive-%d" % (key, p, level), text + mesh_prm(
-            p, tau, adaptive_min, adaptive=(level, adaptive_min, level,
-                                            "kelly velocity, contact zone", 0.02, 0.5)))
-        results.setdefault(key, []).append(dict(
-            p=p, mesh="adaptive kelly", finest=level, dofs=mean(column(rows, "dofs")),
-            time=run_time(summary), **measures(rows, summary)))
+        for interval in intervals:
+            rows, summary = run("%s-p%d-adaptive-%d-every-%d" % (key, p, level, interval),
+                                text + mesh_prm(p, tau, adaptive_min,
+                                                adaptive=(level, adaptive_min, level,
+                                                          "kelly velocity, contact zone",
+                                                          0.02, 0.5),
+                                                interval=interval))
+            results.setdefault(key, []).append(dict(
+                p=p, mesh="adaptive kelly every %d" % interval, finest=level,
+                dofs=mean(column(rows, "dofs")), time=run_time(summary),
+                **measures(rows, summary)))
 
 
 if not only or "hertz" in only:
     hertz = open("prm/hertz_drop.prm").read().replace("set End time  = 1", "set End time  = 0.6")
     hertz += "\nsubsection Scene\n  subsection Hertz\n    set Contact zone refinements = 0\n  end\nend\n"
-    reference_scene("hertz", hertz, {1: [2, 3, 4], 2: [1, 2, 3], 3: [1, 2]}, 2, 4, 0.01, 1)
+    reference_scene("hertz", hertz, {1: [2, 3, 4], 2: [1, 2, 3], 3: [1, 2]}, 2, 4, 0.01, 1,
+                    [2, 16])
 
 if not only or "ball_drop" in only:
     ball = open("prm/ball_drop_adaptive.prm").read()
     ball = ball[:ball.index("subsection Mesh refinement")] + ball[ball.index("subsection Material\n"):]
     ball = ball.replace("set Output interval = 0.1", "set Output interval = 0.5")
-    reference_scene("ball_drop", ball, {1: [1, 2], 2: [1]}, 1, 3, 0.02, 1)
+    reference_scene("ball_drop", ball, {1: [1, 2], 2: [1, 2]}, 1, 3, 0.02, 1, [2, 16])
 
 for key, values in results.items():
     print("\n%s:\n" % key)

@@ -65,14 +65,15 @@ namespace dyncontact
       "Front widening",
       "0",
       Patterns::Double(0., 100.),
-      "Cells whose centres lie within w c tau n of the centre of a cell "
-      "the indicators refine are refined too, and none of them coarsened, "
-      "where w is this value, c the fastest wave speed sqrt((lambda + "
-      "2 mu)/rho) of the bodies, tau the Time step (the Maximum time step "
-      "with adaptive tau) and n the Refinement interval: w = 1 widens the "
-      "refined zone by the distance a wave front travels until the next "
-      "adaptation, so that the front stays inside it. Dimensionless, 0 to "
-      "100; 0: no widening.");
+      "Cells of level l within w c tau n max(1, Maximum level - l) of a "
+      "cell the indicators refine are refined too, and none of them "
+      "coarsened, where w is this value, c the fastest wave speed "
+      "sqrt((lambda + 2 mu)/rho) of the bodies, tau the Time step (the "
+      "Maximum time step with adaptive tau) and n the Refinement interval: "
+      "w = 1 widens the refined zone by the distance a wave front travels "
+      "until the next adaptation (times the levels a cell still has to "
+      "climb, one per adaptation), so that the front stays inside it. "
+      "Dimensionless, 0 to 100; 0: no widening.");
     std::string documentation;
     for (const auto &info :
          PluginRegistry<MeshRefinement::Interface>::plugins())

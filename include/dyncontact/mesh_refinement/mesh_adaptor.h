@@ -22,10 +22,12 @@ namespace dyncontact
    * the chosen criteria (plugins: the indicators of all criteria are added,
    * the top fraction refined and the bottom fraction coarsened, then each
    * criterion flags the cells it insists on), within the level bounds.
-   * With "Front widening" w > 0, every cell within w c tau n of a cell the
-   * indicators refine (c the fastest wave speed of the bodies, n the
-   * interval) is refined too and none of them coarsened: the distance a
-   * wave front travels until the next adaptation (widen_refinement()).
+   * With "Front widening" w > 0, every cell of level l within w c tau n
+   * max(1, Maximum level - l) of a cell the indicators refine (c the
+   * fastest wave speed of the bodies, n the interval) is refined too and
+   * none of them coarsened: the distance a wave front travels until the
+   * next adaptation, times the adaptations a cell needs to reach the
+   * maximum level.
    * Before t = 0 the contact zone is refined "Initial contact refinements"
    * times. What a transfer of the state did is the simulator's
    * MeshTransfer record.
