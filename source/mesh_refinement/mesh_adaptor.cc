@@ -118,6 +118,12 @@ namespace dyncontact
     AssertThrow(refine_fraction + coarsen_fraction <= 1.,
                 ExcMessage("Mesh refinement: Refine fraction + Coarsen "
                            "fraction must not exceed 1."));
+    AssertThrow(front_widening == 0. || interval > 0,
+                ExcMessage("Mesh refinement/Front widening = " +
+                           Utilities::to_string(front_widening) +
+                           " widens the refinement of a mesh that adapts "
+                           "during the run: it needs Mesh "
+                           "refinement/Refinement interval > 0 (got 0)."));
     AssertThrow(interval == 0 || !selected.empty(),
                 ExcMessage("Mesh refinement/Criteria must name at least one "
                            "criterion when the mesh adapts."));
@@ -177,14 +183,17 @@ namespace dyncontact
      * of centre x and half size r is within d of a flagged cell (x', r') if
      * |x - x'| - r - r' <= d (the distance of the two cells' boxes along
      * the line of their centres).
-     * The flags spread from face neighbour to face neighbour (and to the
-     * ghost cells of the other ranks, round by round), each cell keeping
-     * the nearest flagged cell that reached it, until no cell is reached
-     * any more: the work is proportional to the cells of the widened zone,
-     * the rounds to its width in cells.
+     * The flags spread from face neighbour to face neighbour, each cell
+     * keeping the nearest flagged cell that reached it, until no cell is
+     * reached any more, first over each rank's own cells, then to the ghost
+     * cells of the other ranks, where they spread again, until no rank
+     * reaches a cell: the work is proportional to the cells of the widened
+     * zone, the exchanges to the times the zone crosses a rank's boundary.
+     * Returns the widening of the coarsest cells and the mesh's extent (the
+     * distance of its outermost cell centres).
      */
     template <int dim>
-    void
+    std::pair<double, double>
     widen_refinement(parallel::distributed::Triangulation<dim> &triangulation,
                      const double                               distance,
                      const unsigned int                         max_level)
@@ -200,21 +209,34 @@ namespace dyncontact
       const auto          limit = [&](const int level) {
         return distance * std::max(1, int(max_level) - level);
       };
-      // the flags spread as far as the coarsest cell's limit
-      int coarsest = int(max_level);
+      // the flagged cells start the spread, which goes as far as the
+      // coarsest cell's limit
+      int        coarsest = int(max_level);
+      Point<dim> lower, upper; // of the mesh
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::numeric_limits<double>::max();
+          upper[d] = -std::numeric_limits<double>::max();
+        }
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
-          coarsest = std::min(coarsest, cell->level());
-      const double spread = limit(Utilities::MPI::min(coarsest, comm));
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned() && cell->refine_flag_set())
           {
-            const unsigned int i = cell->active_cell_index();
-            origin[i]            = {cell->center(), half_size(cell)};
-            reach[i]             = -std::numeric_limits<double>::max();
-            changed[i]           = 1;
-            front.push_back(cell);
+            coarsest = std::min(coarsest, cell->level());
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::min(lower[d], cell->center()[d]);
+                upper[d] = std::max(upper[d], cell->center()[d]);
+              }
+            if (cell->refine_flag_set())
+              {
+                const unsigned int i = cell->active_cell_index();
+                origin[i]            = {cell->center(), half_size(cell)};
+                reach[i]             = -std::numeric_limits<double>::max();
+                changed[i]           = 1;
+                front.push_back(cell);
+              }
           }
+      const double spread = limit(Utilities::MPI::min(coarsest, comm));
 
       // @p cell reached from @p from: true if it is within the spread and
       // nearer than what reached it before
@@ -230,46 +252,57 @@ namespace dyncontact
         return true;
       };
 
+      const auto visit =
+        [&](const Cell &neighbor, const Cell &cell, std::vector<Cell> &next) {
+          if (neighbor->is_locally_owned() &&
+              reached(neighbor, origin[cell->active_cell_index()]))
+            next.push_back(neighbor);
+        };
       const bool parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
-      while (Utilities::MPI::max(front.size(), comm) > 0)
+      while (true)
         {
-          // what changed on this rank's cells, to the ranks that see them as
-          // ghosts
-          if (parallel)
-            GridTools::exchange_cell_data_to_ghosts<Origin>(
-              triangulation,
-              [&](const Cell &cell) {
-                return changed[cell->active_cell_index()] ?
-                         std_cxx17::optional<Origin>(
-                           origin[cell->active_cell_index()]) :
-                         std_cxx17::optional<Origin>();
-              },
-              [&](const Cell &cell, const Origin &from) {
-                if (reached(cell, from))
-                  front.push_back(cell);
-              });
-          for (const Cell &cell : front)
-            changed[cell->active_cell_index()] = 0;
-
-          std::vector<Cell> next;
-          const auto visit = [&](const Cell &neighbor, const Cell &cell) {
-            if (neighbor->is_locally_owned() &&
-                reached(neighbor, origin[cell->active_cell_index()]))
-              next.push_back(neighbor);
-          };
-          for (const Cell &cell : front)
-            for (const unsigned int f : cell->face_indices())
-              if (!cell->at_boundary(f))
-                {
-                  const auto neighbor = cell->neighbor(f);
-                  if (neighbor->has_children())
-                    for (unsigned int s = 0; s < cell->face(f)->n_children();
-                         ++s)
-                      visit(cell->neighbor_child_on_subface(f, s), cell);
-                  else
-                    visit(neighbor, cell);
-                }
-          front.swap(next);
+          // over this rank's cells, round by round, as far as it goes
+          while (!front.empty())
+            {
+              std::vector<Cell> next;
+              for (const Cell &cell : front)
+                for (const unsigned int f : cell->face_indices())
+                  if (!cell->at_boundary(f))
+                    {
+                      const auto neighbor = cell->neighbor(f);
+                      if (neighbor->has_children())
+                        for (unsigned int s = 0;
+                             s < cell->face(f)->n_children();
+                             ++s)
+                          visit(cell->neighbor_child_on_subface(f, s),
+                                cell,
+                                next);
+                      else
+                        visit(neighbor, cell, next);
+                    }
+              front.swap(next);
+            }
+          if (!parallel)
+            break;
+          // what changed on this rank's cells since the last exchange, to
+          // the ranks that see them as ghosts: the ghosts it reaches start
+          // the next spread there (one exchange per crossing of a rank's
+          // boundary, not one per cell of the spread)
+          GridTools::exchange_cell_data_to_ghosts<Origin>(
+            triangulation,
+            [&](const Cell &cell) {
+              return changed[cell->active_cell_index()] ?
+                       std_cxx17::optional<Origin>(
+                         origin[cell->active_cell_index()]) :
+                       std_cxx17::optional<Origin>();
+            },
+            [&](const Cell &cell, const Origin &from) {
+              if (reached(cell, from))
+                front.push_back(cell);
+            });
+          std::fill(changed.begin(), changed.end(), 0);
+          if (Utilities::MPI::max(front.size(), comm) == 0)
+            break;
         }
 
       for (const auto &cell : triangulation.active_cell_iterators())
@@ -279,6 +312,12 @@ namespace dyncontact
             cell->clear_coarsen_flag();
             cell->set_refine_flag();
           }
+      double extent = 0.; // between the mesh's outermost cell centres
+      for (unsigned int d = 0; d < dim; ++d)
+        extent +=
+          Utilities::fixed_power<2>(Utilities::MPI::max(upper[d], comm) +
+                                    Utilities::MPI::max(-lower[d], comm));
+      return {spread, std::sqrt(extent)};
     }
   } // namespace
 
@@ -311,7 +350,25 @@ namespace dyncontact
       }
     const double distance = widening_distance();
     if (distance > 0.)
-      widen_refinement(triangulation, distance, max_level);
+      {
+        const auto [spread, extent] =
+          widen_refinement(triangulation, distance, max_level);
+        if (spread >= extent && !widening_warned)
+          {
+            widening_warned = true;
+            this->get_pcout()
+              << std::setprecision(3) << "   warning: Mesh refinement/Front "
+              << "widening = " << front_widening << " widens a marked cell "
+              << "by up to " << spread
+              << " m on the coarsest cells (w c tau n (Maximum level - "
+              << "level), with Maximum level = " << max_level
+              << "), more than the mesh's extent of " << extent
+              << " m: every adaptation refines the whole mesh by a level. "
+                 "Set Maximum level to the finest level the run needs, or "
+                 "lower Front widening."
+              << std::endl;
+          }
+      }
     for (const auto &criterion : criteria)
       criterion->tag_additional_cells();
     for (const auto &cell : triangulation.active_cell_iterators())

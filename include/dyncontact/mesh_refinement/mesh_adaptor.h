@@ -97,13 +97,15 @@ namespace dyncontact
     widening_distance() const;
 
   private:
-    unsigned int             interval            = 0;
-    unsigned int             min_level           = 0;
-    unsigned int             max_level           = 10;
-    double                   refine_fraction     = 0.2;
-    double                   coarsen_fraction    = 0.3;
-    unsigned int             initial_refinements = 0;
-    double                   front_widening      = 0.;
+    unsigned int interval            = 0;
+    unsigned int min_level           = 0;
+    unsigned int max_level           = 10;
+    double       refine_fraction     = 0.2;
+    double       coarsen_fraction    = 0.3;
+    unsigned int initial_refinements = 0;
+    double       front_widening      = 0.;
+    /// whether the warning of a widening beyond the mesh was printed
+    mutable bool             widening_warned = false;
     std::vector<std::string> criterion_names;
 
     std::vector<std::unique_ptr<MeshRefinement::Interface<dim>>> criteria;
