@@ -32,7 +32,8 @@ for prm in sorted(glob.glob("prm/extreme/*.prm")):
         os.remove(run)
         rows = list(csv.DictReader(open(directory + "/statistics.tsv"), delimiter="\t"))
         its = [float(r["active_set_iterations"]) for r in rows[1:]]
-        e = [float(r["energy_total"]) + float(r["dissipation_viscous"]) for r in rows]
+        e = [float(r["energy_total"]) + float(r["dissipation_viscous"])
+             + float(r.get("dissipation_numerical", 0.)) for r in rows]
         scale = max(abs(float(r["energy_total"])) for r in rows)
         growth = max(b - a for a, b in zip(e, e[1:])) / scale
         pen = max(float(r["max_penetration"]) for r in rows)

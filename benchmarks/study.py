@@ -155,7 +155,8 @@ with open(args.out, "w", newline="") as out:
                 p_ref = max(float(r["max_contact_pressure"]) for r in reference(m)[1])
             p_max = max(float(r["max_contact_pressure"]) for r in rows)
             e0 = float(rows[0]["energy_total"])
-            e_end = float(rows[-1]["energy_total"]) + float(rows[-1]["dissipation_viscous"])
+            e_end = (float(rows[-1]["energy_total"]) + float(rows[-1]["dissipation_viscous"])
+                     + float(rows[-1].get("dissipation_numerical", 0.)))
             steps = len(rows) - 1
             writer.writerow([scheme, m, args.h0 / 2 ** m, tau,
                              int(max(float(r["dofs"]) for r in rows)), steps,

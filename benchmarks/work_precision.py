@@ -14,6 +14,8 @@ Scenes and what is measured (errors relative, except times and positions):
   (exact 2.1 s; the contact interval's start is t = 0.1 s to tau for every
   run), the pressure overshoot max p / (rho c v0) - 1 and the ripple
   max |p / (rho c v0) - 1| over the middle half of the contact, [0.6, 1.6] s.
+  Both bars also run the uniform meshes with Time integration/Numerical
+  dissipation = 0.05 (doc/algorithms.md), the dashed lines.
 - two bars: prm/two_bars.prm (H = 0.1 m) to T = 2.5 s, exact solution; the
   same measures, the position of the second bar; square cells, n/10 across
   the first bar and n/10 + 1 across the second (non-matching) for n along.
@@ -97,13 +99,14 @@ def scene_prm(base, scene, entries):
         scene, "".join("    set %s = %s\n" % e for e in entries))
 
 
-def mesh_prm(p, tau, global_refinements=None, adaptive=None, interval=2):
+def mesh_prm(p, tau, global_refinements=None, adaptive=None, interval=2, theta=0.):
     text = "set Polynomial degree = %d\n" % p
     if p >= 2:
         # the matrix-free S with Jacobi: cheaper than the assembled S for
         # p >= 2 (benchmarks/step_operator.py), the same results
         text += "subsection Contact solver\n  set Step matrix = matrix-free\nend\n"
-    text += "subsection Time integration\n  set Time step = %.17g\nend\n" % tau
+    text += ("subsection Time integration\n  set Time step = %.17g\n"
+             "  set Numerical dissipation = %g\nend\n" % (tau, theta))
     if global_refinements is not None:
         text += "subsection Mesh\n  set Initial global refinements = %d\nend\n" % global_refinements
     if adaptive:
@@ -117,6 +120,10 @@ def mesh_prm(p, tau, global_refinements=None, adaptive=None, interval=2):
 
 
 results = {}  # scene -> list of dicts
+# the bars also run uniform meshes with this Time integration/Numerical
+# dissipation
+dissipation = 0.05
+dissipative = "uniform theta = %g" % dissipation
 
 
 def bar_measures(rows, summary, position_column):
@@ -148,6 +155,15 @@ def bar_scene(key, base, scene, cells_list, position_column, across, levels, cri
                                 scene_prm(base, scene, entries(cells)) + mesh_prm(p, tau))
             results.setdefault(key, []).append(dict(
                 p=p, mesh="uniform", finest=cells, dofs=mean(column(rows, "dofs")),
+                time=run_time(summary), **bar_measures(rows, summary, position_column)))
+        # the same meshes with numerical dissipation (doc/algorithms.md)
+        for cells in cells_list[p]:
+            tau = 1. / cells / (2. * p)
+            rows, summary = run("%s-p%d-uniform-%d-theta-%g" % (key, p, cells, dissipation),
+                                scene_prm(base, scene, entries(cells)) +
+                                mesh_prm(p, tau, theta=dissipation))
+            results.setdefault(key, []).append(dict(
+                p=p, mesh=dissipative, finest=cells, dofs=mean(column(rows, "dofs")),
                 time=run_time(summary), **bar_measures(rows, summary, position_column)))
         cells = cells_list[p][-1]
         for name, crit in criteria:
@@ -260,8 +276,12 @@ for key, values in results.items():
         for ax, measure in zip(axes, ["error", "position"]):
             ax.loglog([v["time"] for v in uniform], [v[measure] for v in uniform], "o-",
                       color=colour, label="p = %d uniform" % p)
+            damped = [v for v in values if v["p"] == p and v["mesh"] == dissipative]
+            if damped:
+                ax.loglog([v["time"] for v in damped], [v[measure] for v in damped], "x--",
+                          color=colour, label="p = %d %s" % (p, dissipative))
             for v in values:
-                if v["p"] == p and v["mesh"] != "uniform":
+                if v["p"] == p and v["mesh"] not in ["uniform", dissipative]:
                     ax.loglog([v["time"]], [v[measure]],
                               "s" if "recovery" in v["mesh"] else "^",
                               color=colour, markerfacecolor="none", markersize=9,

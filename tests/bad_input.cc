@@ -83,6 +83,13 @@ main(int argc, char **argv)
     {"matrix_free_step_with_amg",
      "subsection Contact solver\n  set Step matrix = matrix-free\n"
      "  set Preconditioner = AMG\nend\n"},
+    {"front_widening_without_adaptation",
+     "subsection Mesh refinement\n  set Front widening = 1\nend\n"},
+    {"numerical_dissipation_above_half",
+     "subsection Time integration\n  set Numerical dissipation = 0.6\nend\n"},
+    {"numerical_dissipation_static",
+     "subsection Time integration\n  set Scheme = static\n"
+     "  set Numerical dissipation = 0.1\nend\n"},
     {"matrix_free_step_static",
      "subsection Contact solver\n  set Step matrix = matrix-free\nend\n"
      "subsection Time integration\n  set Scheme = static\nend\n"},

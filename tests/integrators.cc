@@ -7,7 +7,8 @@
 // or factor in one scheme fails a line that names it. Also: the critical set
 // (eq. 40), the velocity correction, the multipliers, the vanishing relative
 // normal velocity (eq. 19) and the momentum that the M-projection keeps for
-// two bodies.
+// two bodies. And N-CS++ with Numerical dissipation theta: S = m + (1/4 +
+// theta/2) tau^2 k + tau/2 b, r(w) = m w - (1/4 - theta/2) tau^2 k u0 + ...
 
 #include <deal.II/base/mpi.h>
 
@@ -49,7 +50,8 @@ one_step(const std::string                      &scheme,
          const double                            tau,
          const std::vector<double>              &u0,
          const std::vector<double>              &v0,
-         const bool                              initialize = false)
+         const bool                              initialize = false,
+         const double                            theta      = 0.)
 {
   const unsigned int n = u0.size();
   MatrixType         A, B;
@@ -81,6 +83,7 @@ one_step(const std::string                      &scheme,
   rows.rows                  = {row};
   const auto     constraints = no_constraints(n);
   TimeIntegrator integrator(scheme_by_name(scheme),
+                            theta,
                             tau,
                             system,
                             ActiveSetSolver::Parameters(),
@@ -199,6 +202,44 @@ main(int argc, char **argv)
                close(o.udot[0], v1) && close(o.u[0], u0) &&
                  close(c.udot[0], v0));
       }
+    }
+
+  // N-CS++ with numerical dissipation theta: A acts on (1/2 + theta) u1 +
+  // (1/2 - theta) u0
+  for (const auto &[u0, v0, what] : {std::make_tuple(0.02, 0.5, "into contact"),
+                                     std::make_tuple(0.02, -0.5, "free")})
+    {
+      const double theta = 0.2;
+      const double S_theta =
+        m + (0.25 + 0.5 * theta) * tau * tau * k + tau / 2. * b;
+      const double r1 = m * (u0 + tau * v0) -
+                        (0.25 - 0.5 * theta) * tau * tau * k * u0 +
+                        tau / 2. * b * u0 + tau * tau / 2. * f;
+      const double u1        = std::min(r1 / S_theta, g);
+      const double udot_pred = 2. / tau * (u1 - u0) - v0;
+      const double v1        = (std::min(u1 + tau * udot_pred, g) - u1) / tau;
+      const auto   o         = one_step("N-CS++",
+                              {{m}},
+                              {{k}},
+                              {{b}},
+                              {f},
+                              wall,
+                              tau,
+                              {u0},
+                              {v0},
+                              false,
+                              theta);
+      report("1 DoF, N-CS++ with theta = 0.2, a step " + std::string(what) +
+               ": u = " + std::to_string(o.u[0]) +
+               ", udot = " + std::to_string(o.udot[0]) +
+               ", mu = " + std::to_string(o.report.multipliers[0]),
+             close(o.u[0], u1) && close(o.udot[0], v1) &&
+               close(o.report.multipliers[0],
+                     r1 / S_theta > g ? r1 - S_theta * u1 : 0.) &&
+               // (theta changes the step)
+               !(close(o.u[0], run1("N-CS++", u0, v0).u[0]) &&
+                 close(o.report.multipliers[0],
+                       run1("N-CS++", u0, v0).report.multipliers[0])));
     }
 
   // static: min 1/2 k v^2 - f v on v <= g: v = min(f/k, g), udot = 0

@@ -10,7 +10,8 @@
 // - the Hertz drop (two bodies, the ball viscous, hanging nodes where the
 //   contact zone is refined) for p = 1, 2, 3, with the lumped and the
 //   consistent mass (the assembled S then with 'Preconditioner = Jacobi',
-//   not the AMG that 'automatic' takes);
+//   not the AMG that 'automatic' takes), and for p = 2 with Time
+//   integration/Numerical dissipation = 0.1 (S = M + 0.3 tau^2 A + tau/2 B);
 // - the 3D bar with Q2 elements;
 // - the 2D bar with adaptive time steps (tau levels cached, steps shortened
 //   to contact events, each with its own S);
@@ -111,6 +112,11 @@ main(int argc, char **argv)
       compare("Hertz drop, Q" + std::to_string(degree) + ", " + mass +
                 " mass, hanging nodes",
               hertz_prm(degree, mass));
+
+  compare("Hertz drop, Q2, lumped mass, hanging nodes, numerical dissipation "
+          "0.1",
+          hertz_prm(2, "lumped") + "subsection Time integration\n"
+                                   "  set Numerical dissipation = 0.1\nend\n");
 
   compare("3D bar, Q2",
           bar_prm(3, "N-CS++", 8, 1. / 32., 0.3) +

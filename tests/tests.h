@@ -22,6 +22,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace testing
 {
@@ -377,13 +378,27 @@ namespace testing
     return text;
   }
 
+  /// The dissipated energy W: the viscous one and, with Time
+  /// integration/Numerical dissipation > 0, the scheme's own.
+  inline std::vector<double>
+  dissipated(const Statistics &s)
+  {
+    auto w = s.column("dissipation_viscous");
+    if (s.has_column("dissipation_numerical"))
+      {
+        const auto w_num = s.column("dissipation_numerical");
+        for (unsigned int i = 0; i < w.size(); ++i)
+          w[i] += w_num[i];
+      }
+    return w;
+  }
+
   /// max_n (E^{n+1} + W^{n+1}) - (E^n + W^n): positive means energy growth.
   inline double
   max_energy_increase(const Statistics &s)
   {
-    const auto e  = s.column("energy_total"),
-               w  = s.column("dissipation_viscous");
-    double growth = -1e300;
+    const auto e = s.column("energy_total"), w = dissipated(s);
+    double     growth = -1e300;
     for (unsigned int i = 1; i < e.size(); ++i)
       growth = std::max(growth, (e[i] + w[i]) - (e[i - 1] + w[i - 1]));
     return growth;
@@ -393,8 +408,7 @@ namespace testing
   inline double
   max_energy_increase_of_steps(const Statistics &s)
   {
-    const auto e    = s.column("energy_total"),
-               w    = s.column("dissipation_viscous"),
+    const auto e = s.column("energy_total"), w = dissipated(s),
                jump = s.column("energy_transfer");
     double growth   = -1e300;
     for (unsigned int i = 1; i < e.size(); ++i)

@@ -48,7 +48,13 @@ namespace dyncontact
     const typename SemiDiscreteSystem<dim>::Parameters system = {
       parameters.degree, time_integration.lumped_mass};
     problem = std::make_unique<DiscreteProblem<dim>>(
-      prm, scheme, system, time_step_controller, pcout, comm);
+      prm,
+      scheme,
+      time_integration.numerical_dissipation,
+      system,
+      time_step_controller,
+      pcout,
+      comm);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
     vtu_writer = std::make_unique<VtuWriter<dim>>();

@@ -40,6 +40,13 @@ namespace dyncontact
   }
 
   template <int dim>
+  const TimeIntegrationParameters &
+  SimulatorAccess<dim>::get_time_integration() const
+  {
+    return simulator->time_integration;
+  }
+
+  template <int dim>
   const Scene<dim> &
   SimulatorAccess<dim>::get_scene() const
   {

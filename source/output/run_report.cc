@@ -66,10 +66,15 @@ namespace dyncontact
       text << " (condition number of S scaled by its diagonal at most "
            << std::setprecision(3) << bound << std::setprecision(6) << ")";
     text << "\n   time: ";
+    std::string scheme = "scheme " + integrator.get_scheme().name;
+    if (const double theta = integrator.get_operators().numerical_dissipation();
+        theta > 0.)
+      scheme +=
+        " with numerical dissipation theta = " + Utilities::to_string(theta);
     if (integrator.get_scheme().is_static)
       text << "static problem (one solve)";
     else if (time_step_controller.is_adaptive())
-      text << "scheme " << integrator.get_scheme().name << ", adaptive tau in ["
+      text << scheme << ", adaptive tau in ["
            << time_step_controller.get_minimum_timestep() << ", "
            << time_step_controller.get_maximum_timestep() << "] s, now "
            << time_step_controller.get_timestep()
@@ -81,9 +86,9 @@ namespace dyncontact
         const double n_steps =
           std::ceil((control.get_end_time() - control.get_time()) / tau - 1e-9);
         const double last = control.get_time() + n_steps * tau;
-        text << "scheme " << integrator.get_scheme().name << ", tau = " << tau
-             << " s, " << n_steps << " steps from t = " << control.get_time()
-             << " to " << last << " s";
+        text << scheme << ", tau = " << tau << " s, " << n_steps
+             << " steps from t = " << control.get_time() << " to " << last
+             << " s";
         if (last > control.get_end_time() + 1e-9 * tau)
           text << "\n   warning: End time = " << control.get_end_time()
                << " s is not reached in whole steps of Time step = " << tau

@@ -1,9 +1,12 @@
 // Energies (Theorem 3.2): E_kin = 1/2 udot^T M udot, E_el = 1/2 u^T A u -
 // f^T u, and the viscous dissipation W_visc += (du)^T B (du) / tau,
-// accumulated over the steps; E_kin + E_el + W_visc is constant without
-// contact and non-increasing with contact.
+// accumulated over the steps, and with Time integration/Numerical
+// dissipation theta > 0 the scheme's own dissipation W_num += theta (du)^T A
+// (du); E_kin + E_el + W_visc (+ W_num) is constant without contact and
+// non-increasing with contact.
 //
-// The balance monitor: energy_balance = E + W_visc - E(0) minus the energy
+// The balance monitor: energy_balance = E + W_visc (+ W_num) - E(0) minus the
+// energy
 // changes of mesh transfers, which Theorem 3.2 keeps <= 0 up to the linear
 // solver's tolerance. A step that raises it by more than
 // 1e3 * Linear solver tolerance (but within [1e-9, 1e-4]) times the run's
@@ -15,6 +18,7 @@
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
 #include <dyncontact/time_stepping/simulation_control.h>
+#include <dyncontact/time_stepping/time_integration_parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,20 +33,28 @@ namespace dyncontact
     class Energy : public Interface<dim>
     {
     public:
-      /// E + W_visc at the start and the end, the largest increase between
-      /// steps and whether Theorem 3.2 held within the monitor's tolerance.
+      /// E + W_visc (+ W_num) at the start and the end, the largest increase
+      /// between steps and whether Theorem 3.2 held within the monitor's
+      /// tolerance.
       std::string
       summary(const Statistics &s, const SummaryInput &input) const override
       {
         if (input.is_static)
           return "";
-        const auto         time        = s.column("time");
-        const auto         kinetic     = s.column("energy_kinetic");
-        const auto         elastic     = s.column("energy_elastic");
-        const auto         dissipation = s.column("dissipation_viscous");
-        const auto         balance     = s.column("energy_balance");
-        const std::string  energy      = input.dim == 2 ? "J/m" : "J";
-        const unsigned int last        = s.rows.size() - 1;
+        const auto time        = s.column("time");
+        const auto kinetic     = s.column("energy_kinetic");
+        const auto elastic     = s.column("energy_elastic");
+        auto       dissipation = s.column("dissipation_viscous");
+        const bool numerical   = s.has_column("dissipation_numerical");
+        if (numerical)
+          {
+            const auto w_num = s.column("dissipation_numerical");
+            for (unsigned int r = 0; r < dissipation.size(); ++r)
+              dissipation[r] += w_num[r];
+          }
+        const auto         balance = s.column("energy_balance");
+        const std::string  energy  = input.dim == 2 ? "J/m" : "J";
+        const unsigned int last    = s.rows.size() - 1;
         double             scale = 0., increase = 0.;
         unsigned           at = 0;
         for (unsigned int r = 0; r <= last; ++r)
@@ -58,9 +70,10 @@ namespace dyncontact
           }
         const double       relative = increase / std::max(scale, 1e-300);
         std::ostringstream out;
-        out << std::setprecision(6)
-            << "energy E + W_visc: " << kinetic[0] + elastic[0] + dissipation[0]
-            << " " << energy << " at the start, "
+        out << std::setprecision(6) << "energy E + W_visc"
+            << (numerical ? " + W_num" : "") << ": "
+            << kinetic[0] + elastic[0] + dissipation[0] << " " << energy
+            << " at the start, "
             << kinetic[last] + elastic[last] + dissipation[last] << " "
             << energy << " at the end, energy_balance " << balance[last] << " "
             << energy << "\n"
@@ -85,6 +98,13 @@ namespace dyncontact
       std::vector<std::string>
       columns() const override
       {
+        if (theta() > 0.)
+          return {"energy_kinetic",
+                  "energy_elastic",
+                  "dissipation_viscous",
+                  "dissipation_numerical",
+                  "energy_total",
+                  "energy_balance"};
         return {"energy_kinetic",
                 "energy_elastic",
                 "dissipation_viscous",
@@ -107,14 +127,17 @@ namespace dyncontact
             system.viscous_vmult(B_du, du);
             dissipation += (B_du * du) / this->get_step_report().tau;
           }
-        const double       total = kinetic + elastic + dissipation;
+        if (this->get_control().get_step() > 0)
+          numerical += this->get_step_report().numerical_dissipation;
+        const double       total = kinetic + elastic + dissipation + numerical;
         const unsigned int step  = this->get_control().get_step();
         if (step == 0)
           initial = total;
         else
           transfers += this->get_mesh_transfer().energy_change;
-        const double balance = total - initial - transfers;
-        scale = std::max(scale, kinetic + std::abs(elastic) + dissipation);
+        const double balance   = total - initial - transfers;
+        scale                  = std::max(scale,
+                         kinetic + std::abs(elastic) + dissipation + numerical);
         const double tolerance = this->get_integrator()
                                    .get_operators()
                                    .get_solver_parameters()
@@ -127,8 +150,9 @@ namespace dyncontact
               this->get_pcout()
                 << std::setprecision(3) << "   warning: step " << step
                 << " (t = " << this->get_control().get_time()
-                << " s): E + W_visc grew by " << balance - previous_balance
-                << " J (" << 100. * (balance - previous_balance) / scale
+                << " s): E + W_visc" << (theta() > 0. ? " + W_num" : "")
+                << " grew by " << balance - previous_balance << " J ("
+                << 100. * (balance - previous_balance) / scale
                 << "% of the energy), which Theorem 3.2 excludes. The "
                    "linear solver stops too early for this problem (e.g. a "
                    "viscosity that dominates the step matrix): lower "
@@ -140,8 +164,18 @@ namespace dyncontact
                 << std::endl;
           }
         previous_balance = balance;
-        row.insert(row.end(),
-                   {kinetic, elastic, dissipation, kinetic + elastic, balance});
+        if (theta() > 0.)
+          row.insert(row.end(),
+                     {kinetic,
+                      elastic,
+                      dissipation,
+                      numerical,
+                      kinetic + elastic,
+                      balance});
+        else
+          row.insert(
+            row.end(),
+            {kinetic, elastic, dissipation, kinetic + elastic, balance});
       }
 
       void
@@ -152,6 +186,12 @@ namespace dyncontact
           << transfers << " " << scale << " " << previous_balance << " "
           << n_increases;
         state["viscous_dissipation"] = s.str();
+        if (theta() > 0.)
+          {
+            std::ostringstream w;
+            w << std::setprecision(17) << numerical;
+            state["numerical_dissipation"] = w.str();
+          }
       }
 
       void
@@ -170,10 +210,22 @@ namespace dyncontact
             *value = std::stod(token);
           }
         s >> n_increases;
+        // (a checkpoint of theta = 0 has none; theta is one of the
+        // parameters a resumed run must keep)
+        if (state.count("numerical_dissipation"))
+          numerical = std::stod(state.at("numerical_dissipation"));
       }
 
     private:
+      /// Time integration/Numerical dissipation.
+      double
+      theta() const
+      {
+        return this->get_time_integration().numerical_dissipation;
+      }
+
       double       dissipation      = 0.;
+      double       numerical        = 0.;
       double       initial          = 0.;
       double       transfers        = 0.;
       double       scale            = 0.;

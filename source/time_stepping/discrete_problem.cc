@@ -17,6 +17,7 @@ namespace dyncontact
   DiscreteProblem<dim>::DiscreteProblem(
     ParameterHandler                                   &prm,
     const Scheme                                       &scheme,
+    const double                                        numerical_dissipation,
     const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
     TimeStepController                                 &time_step_controller,
     const ConditionalOStream                           &pcout,
@@ -25,9 +26,17 @@ namespace dyncontact
     , comm(comm)
     , pcout(pcout)
     , scheme(scheme)
+    , numerical_dissipation(numerical_dissipation)
     , time_step_controller(time_step_controller)
   {
     solver_parameters.parse_parameters(prm);
+    AssertThrow(!(scheme.is_static && numerical_dissipation > 0.),
+                ExcMessage("Time integration/Numerical dissipation > 0 is "
+                           "for the dynamic schemes; the static problem "
+                           "(Time integration/Scheme = " +
+                           scheme.name +
+                           ") has no time steps to dissipate in: set it to "
+                           "0."));
     AssertThrow(!(scheme.is_static && solver_parameters.matrix_free_step),
                 ExcMessage("Contact solver/Step matrix = matrix-free is for "
                            "the dynamic schemes (its Jacobi preconditioner "
@@ -143,6 +152,7 @@ namespace dyncontact
       near_null_space.rotations = system->rotation_modes();
     integrator =
       std::make_unique<TimeIntegrator>(scheme,
+                                       numerical_dissipation,
                                        time_step_controller.get_timestep(),
                                        system->matrices(),
                                        solver_parameters,

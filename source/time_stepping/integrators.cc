@@ -14,6 +14,7 @@ namespace dyncontact
 {
   StepOperators::StepOperators(
     const bool                            is_static,
+    const double                          numerical_dissipation,
     const double                          tau,
     const SystemMatrices                 &system,
     const ActiveSetSolver::Parameters    &solver_parameters,
@@ -26,6 +27,7 @@ namespace dyncontact
     : displacement_active(rows.size(), 0)
     , projection_active(rows.size(), 0)
     , is_static(is_static)
+    , theta(is_static ? 0. : numerical_dissipation)
     , system(system)
     , solver_parameters(solver_parameters)
     , locally_owned(locally_owned)
@@ -81,8 +83,9 @@ namespace dyncontact
       }
     else
       {
-        // S = M + tau^2/4 A + tau/2 B
-        const double a = tau * tau / 4., b = system.viscous() ? tau / 2. : 0.;
+        // S = M + (1/4 + theta/2) tau^2 A + tau/2 B
+        const double a = (0.25 + 0.5 * theta) * tau * tau,
+                     b = system.viscous() ? tau / 2. : 0.;
         const VectorType M_diagonal =
           system.lumped_mass() ? *system.M_lumped : matrix_diagonal(*system.M);
         VectorType &S_diagonal = step_matrix->diagonal;
@@ -168,10 +171,10 @@ namespace dyncontact
                      const VectorType &u,
                      VectorType       &r) const
   {
-    // r(w) = M w - tau^2/4 A u + tau/2 B u + tau^2/2 f
+    // r(w) = M w - (1/4 - theta/2) tau^2 A u + tau/2 B u + tau^2/2 f
     const double tau = current->tau;
     system.mass_vmult(r, w);
-    r.add(-tau * tau / 4., system.stiffness_vmult(u));
+    r.add(-(0.25 - 0.5 * theta) * tau * tau, system.stiffness_vmult(u));
     if (system.viscous())
       {
         VectorType tmp(u);
@@ -386,6 +389,7 @@ namespace dyncontact
 
   TimeIntegrator::TimeIntegrator(
     const Scheme                         &scheme,
+    const double                          numerical_dissipation,
     const double                          tau,
     const SystemMatrices                 &system,
     const ActiveSetSolver::Parameters    &solver_parameters,
@@ -397,6 +401,7 @@ namespace dyncontact
     const MPI_Comm                        comm)
     : scheme(scheme)
     , operators(scheme.is_static,
+                numerical_dissipation,
                 tau,
                 system,
                 solver_parameters,
@@ -446,12 +451,28 @@ namespace dyncontact
                        VectorType  &udot)
   {
     operators.set_time_step(tau, is_level);
-    StepReport report = empty_report(tau);
+    StepReport   report = empty_report(tau);
+    const double theta  = operators.numerical_dissipation();
+    VectorType   u_old, A_u_old;
+    if (theta > 0.)
+      {
+        // A u^n: the step's right-hand side takes it from the cache
+        u_old   = u;
+        A_u_old = operators.stiffness_product(u);
+      }
     scheme.step(operators, u, udot, report);
     // A u^{n+1}, which the next step's right-hand side needs, now: the
     // energy after this step reads it from the cache (CachedProduct)
     if (!scheme.is_static)
       operators.prepare_next_step(u);
+    if (theta > 0.)
+      {
+        // theta du^T A du from the two products the steps need anyway
+        VectorType du(u);
+        du -= u_old;
+        report.numerical_dissipation =
+          theta * (du * operators.stiffness_product(u) - du * A_u_old);
+      }
 
     // Gamma*_{h,C} (eq. 40): rows where the projection was active but the
     // displacement step was not

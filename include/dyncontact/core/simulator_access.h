@@ -33,6 +33,7 @@ namespace dyncontact
   struct StepMoments;
   struct MeshTransfer;
   struct GlobalParameters;
+  struct TimeIntegrationParameters;
 
   /**
    * One read-only view of the simulation's state for every component that
@@ -63,6 +64,10 @@ namespace dyncontact
 
     const GlobalParameters &
     get_parameters() const;
+
+    /// The entries of subsection 'Time integration'.
+    const TimeIntegrationParameters &
+    get_time_integration() const;
 
     const Scene<dim> &
     get_scene() const;

@@ -36,11 +36,13 @@ namespace dyncontact
   {
   public:
     /// Reads the parameters of the contact rows and the active-set solver
-    /// from @p prm; @p system_parameters: the polynomial degree and the
-    /// mass matrix.
+    /// from @p prm; @p numerical_dissipation: theta of the integrator
+    /// (Time integration/Numerical dissipation); @p system_parameters: the
+    /// polynomial degree and the mass matrix.
     DiscreteProblem(
       ParameterHandler                                   &prm,
       const Scheme                                       &scheme,
+      const double                                        numerical_dissipation,
       const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
       TimeStepController                                 &time_step_controller,
       const ConditionalOStream                           &pcout,
@@ -166,9 +168,11 @@ namespace dyncontact
     void
     check_inertia();
 
-    const MPI_Comm                           comm;
-    const ConditionalOStream                &pcout;
-    const Scheme                            &scheme;
+    const MPI_Comm            comm;
+    const ConditionalOStream &pcout;
+    const Scheme             &scheme;
+    /// Time integration/Numerical dissipation theta, for the integrator.
+    const double                             numerical_dissipation;
     TimeStepController                      &time_step_controller;
     ActiveSetSolver::Parameters              solver_parameters;
     std::unique_ptr<SemiDiscreteSystem<dim>> system;

@@ -35,6 +35,9 @@ namespace dyncontact
     /// The adaptive step control's error estimate eta of the step (0 with
     /// fixed tau; StepSizeControl).
     double error_estimate = 0.;
+    /// theta (du)^T A (du), what the step's numerical dissipation theta took
+    /// (J; 0 for theta = 0).
+    double numerical_dissipation = 0.;
 
     /// Whether both constrained problems of the step converged.
     bool
@@ -54,9 +57,10 @@ namespace dyncontact
 
   /**
    * The operators a time step is written with (ALGORITHMS.md section 4), on
-   * the algebraic level:
-   *   S = M + tau^2/4 A + tau/2 B      (static: S = A),
-   *   r(w) = M w - tau^2/4 A u^n + tau/2 B u^n + tau^2/2 f,
+   * the algebraic level, with the numerical dissipation theta (0 in the
+   * paper):
+   *   S = M + (1/4 + theta/2) tau^2 A + tau/2 B      (static: S = A),
+   *   r(w) = M w - (1/4 - theta/2) tau^2 A u^n + tau/2 B u^n + tau^2/2 f,
    *   the displacement step argmin_{Cv<=g} 1/2 v^T S v - r^T v,
    *   P(w) = argmin_{Cv<=g} 1/2 (v-w)^T M (v-w)   (eq. 15).
    * Each constrained problem is solved by its own active-set solver, warm
@@ -66,6 +70,7 @@ namespace dyncontact
   {
   public:
     StepOperators(const bool                            is_static,
+                  const double                          numerical_dissipation,
                   const double                          tau,
                   const SystemMatrices                 &system,
                   const ActiveSetSolver::Parameters    &solver_parameters,
@@ -85,6 +90,14 @@ namespace dyncontact
     tau() const
     {
       return current->tau;
+    }
+
+    /// The numerical dissipation theta (Time integration/Numerical
+    /// dissipation): each step dissipates theta (du)^T A (du).
+    double
+    numerical_dissipation() const
+    {
+      return theta;
     }
 
     /// The load f.
@@ -124,6 +137,14 @@ namespace dyncontact
     prepare_next_step(const VectorType &u) const
     {
       system.stiffness_vmult(u);
+    }
+
+    /// A u, from the system's CachedProduct if u is the vector of the last
+    /// product (valid until the next product).
+    const VectorType &
+    stiffness_product(const VectorType &u) const
+    {
+      return system.stiffness_vmult(u);
     }
 
     std::size_t
@@ -217,7 +238,9 @@ namespace dyncontact
     std::unique_ptr<StepMatrix>
     make_step_matrix(const double tau) const;
 
-    const bool                        is_static;
+    const bool is_static;
+    /// theta: A acts on (1/2 + theta) u^{n+1} + (1/2 - theta) u^n
+    const double                      theta;
     const SystemMatrices              system;
     const ActiveSetSolver::Parameters solver_parameters;
     const IndexSet                    locally_owned;
@@ -278,6 +301,7 @@ namespace dyncontact
   public:
     /// @p tau: the step matrix built now (the first step's).
     TimeIntegrator(const Scheme                         &scheme,
+                   const double                          numerical_dissipation,
                    const double                          tau,
                    const SystemMatrices                 &system,
                    const ActiveSetSolver::Parameters    &solver_parameters,

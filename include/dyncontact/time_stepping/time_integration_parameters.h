@@ -15,8 +15,9 @@ namespace dyncontact
    * own its global subsections): it declares and reads every entry, and the
    * components that use them are handed the values: the scheme to
    * TimeIntegrator::scheme_by_name(), Mass matrix to SemiDiscreteSystem,
-   * End time to SimulationControl, the time step and its control to
-   * TimeStepController (which checks them).
+   * Numerical dissipation to DiscreteProblem (and through it to the
+   * integrator's StepOperators), End time to SimulationControl, the time step
+   * and its control to TimeStepController (which checks them).
    */
   struct TimeIntegrationParameters
   {
@@ -24,6 +25,8 @@ namespace dyncontact
     std::string scheme = "N-CS++";
     /// Mass matrix = lumped (Gauss-Lobatto) or consistent.
     bool lumped_mass = true;
+    /// Numerical dissipation theta (dimensionless, 0: the paper's schemes).
+    double numerical_dissipation = 0.;
     /// End time T, in s.
     double end_time = 2.5;
     /// Time step tau, in s.
