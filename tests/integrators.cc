@@ -229,11 +229,15 @@ main(int argc, char **argv)
                               {v0},
                               false,
                               theta);
+      // the step's numerical dissipation theta k (u1 - u0)^2
+      const double dissipated = theta * k * (u1 - u0) * (u1 - u0);
       report("1 DoF, N-CS++ with theta = 0.2, a step " + std::string(what) +
                ": u = " + std::to_string(o.u[0]) +
                ", udot = " + std::to_string(o.udot[0]) +
-               ", mu = " + std::to_string(o.report.multipliers[0]),
+               ", mu = " + std::to_string(o.report.multipliers[0]) +
+               ", dissipated " + std::to_string(o.report.numerical_dissipation),
              close(o.u[0], u1) && close(o.udot[0], v1) &&
+               close(o.report.numerical_dissipation, dissipated) &&
                close(o.report.multipliers[0],
                      r1 / S_theta > g ? r1 - S_theta * u1 : 0.) &&
                // (theta changes the step)

@@ -75,8 +75,6 @@ main(int argc, char **argv)
   log() << "N-CS++, theta = " << theta << ":\n";
   {
     const auto [change, growth] = balance_after_release(s);
-    std::cout << "after release: largest change " << change / e0
-              << " E0, W_num growth " << growth / e0 << " E0" << std::endl;
     log() << "  after the release, E + W_num constant (to 1e-10 E0) while "
              "W_num grows by more than 1e-4 E0: "
           << check(change <= 1e-10 * e0 && growth > 1e-4 * e0) << "\n";

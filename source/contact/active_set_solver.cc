@@ -160,8 +160,9 @@ namespace dyncontact
       "Step matrix",
       "assembled",
       Patterns::Selection("assembled|matrix-free"),
-      "How CG applies the step matrix S = M + tau^2/4 A + tau/2 B of the "
-      "dynamic schemes. 'assembled': S is built as a sparse matrix for "
+      "How CG applies the step matrix S = M + (1/4 + theta/2) tau^2 A + "
+      "tau/2 B of the dynamic schemes (theta: Time integration/Numerical "
+      "dissipation, 0 by default). 'assembled': S is built as a sparse matrix for "
       "each time step size (and AMG on it, if chosen). 'matrix-free': A "
       "and B are applied cell by cell by sum factorisation (deal.II's "
       "MatrixFree) and M as its matrix or lumped diagonal, with Jacobi on "

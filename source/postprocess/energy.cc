@@ -98,18 +98,14 @@ namespace dyncontact
       std::vector<std::string>
       columns() const override
       {
+        std::vector<std::string> names = {"energy_kinetic",
+                                          "energy_elastic",
+                                          "dissipation_viscous",
+                                          "energy_total",
+                                          "energy_balance"};
         if (theta() > 0.)
-          return {"energy_kinetic",
-                  "energy_elastic",
-                  "dissipation_viscous",
-                  "dissipation_numerical",
-                  "energy_total",
-                  "energy_balance"};
-        return {"energy_kinetic",
-                "energy_elastic",
-                "dissipation_viscous",
-                "energy_total",
-                "energy_balance"};
+          names.insert(names.begin() + 3, "dissipation_numerical");
+        return names;
       }
 
       void
@@ -164,18 +160,10 @@ namespace dyncontact
                 << std::endl;
           }
         previous_balance = balance;
+        row.insert(row.end(), {kinetic, elastic, dissipation});
         if (theta() > 0.)
-          row.insert(row.end(),
-                     {kinetic,
-                      elastic,
-                      dissipation,
-                      numerical,
-                      kinetic + elastic,
-                      balance});
-        else
-          row.insert(
-            row.end(),
-            {kinetic, elastic, dissipation, kinetic + elastic, balance});
+          row.push_back(numerical);
+        row.insert(row.end(), {kinetic + elastic, balance});
       }
 
       void

@@ -456,7 +456,8 @@ namespace dyncontact
     VectorType   u_old, A_u_old;
     if (theta > 0.)
       {
-        // A u^n: the step's right-hand side takes it from the cache
+        // A u^n, which the step's right-hand side needs (and then finds in
+        // the cache)
         u_old   = u;
         A_u_old = operators.stiffness_product(u);
       }
@@ -464,14 +465,15 @@ namespace dyncontact
     // A u^{n+1}, which the next step's right-hand side needs, now: the
     // energy after this step reads it from the cache (CachedProduct)
     if (!scheme.is_static)
-      operators.prepare_next_step(u);
+      operators.stiffness_product(u);
     if (theta > 0.)
       {
-        // theta du^T A du from the two products the steps need anyway
-        VectorType du(u);
-        du -= u_old;
-        report.numerical_dissipation =
-          theta * (du * operators.stiffness_product(u) - du * A_u_old);
+        // theta du^T A du = theta du^T (A u^{n+1} - A u^n), from the two
+        // products the steps need anyway
+        VectorType &A_du = A_u_old;
+        A_du.sadd(-1., 1., operators.stiffness_product(u));
+        u_old.sadd(-1., 1., u);
+        report.numerical_dissipation = theta * (u_old * A_du);
       }
 
     // Gamma*_{h,C} (eq. 40): rows where the projection was active but the
@@ -567,15 +569,16 @@ namespace dyncontact
   std::string
   TimeIntegrator::inertia_warning() const
   {
-    // in double precision, S = M + tau^2/4 A + tau/2 B keeps the mass only
-    // to about eps * max S_ii/M_ii
+    // in double precision, S = M + (1/4 + theta/2) tau^2 A + tau/2 B keeps
+    // the mass only to about eps * max S_ii/M_ii
     const double inertia_accuracy =
       std::numeric_limits<double>::epsilon() * inertia_ratio();
     if (!(inertia_accuracy > 1e-6))
       return "";
     std::ostringstream text;
     text << std::setprecision(3)
-         << "   warning: in the step matrix S = M + tau^2/4 A + tau/2 B "
+         << "   warning: in the step matrix S = M + (1/4 + theta/2) tau^2 A + "
+            "tau/2 B (theta: Time integration/Numerical dissipation) "
             "the stiffness and viscosity outweigh the mass by a factor "
          << inertia_ratio()
          << " (largest S_ii/M_ii), so in double precision S keeps the "

@@ -131,16 +131,9 @@ namespace dyncontact
       return solver_parameters;
     }
 
-    /// Computes A u for the next step's right-hand side (kept in the
-    /// system's CachedProduct, where the energy finds it too).
-    void
-    prepare_next_step(const VectorType &u) const
-    {
-      system.stiffness_vmult(u);
-    }
-
-    /// A u, from the system's CachedProduct if u is the vector of the last
-    /// product (valid until the next product).
+    /// A u, kept in the system's CachedProduct: computed only if u is not
+    /// the vector of the last product (the reference is valid until the
+    /// next product).
     const VectorType &
     stiffness_product(const VectorType &u) const
     {
