@@ -118,12 +118,14 @@ namespace dyncontact
     AssertThrow(refine_fraction + coarsen_fraction <= 1.,
                 ExcMessage("Mesh refinement: Refine fraction + Coarsen "
                            "fraction must not exceed 1."));
+    std::ostringstream widening; // 6 digits
+    widening << front_widening;
     AssertThrow(front_widening == 0. || interval > 0,
-                ExcMessage("Mesh refinement/Front widening = " +
-                           Utilities::to_string(front_widening) +
-                           " widens the refinement of a mesh that adapts "
-                           "during the run: it needs Mesh "
-                           "refinement/Refinement interval > 0 (got 0)."));
+                ExcMessage(
+                  "Mesh refinement/Front widening = " + widening.str() +
+                  " widens the refinement of a mesh that adapts "
+                  "during the run: it needs Mesh "
+                  "refinement/Refinement interval > 0 (got 0)."));
     AssertThrow(interval == 0 || !selected.empty(),
                 ExcMessage("Mesh refinement/Criteria must name at least one "
                            "criterion when the mesh adapts."));

@@ -69,8 +69,11 @@ namespace dyncontact
     std::string scheme = "scheme " + integrator.get_scheme().name;
     if (const double theta = integrator.get_operators().numerical_dissipation();
         theta > 0.)
-      scheme +=
-        " with numerical dissipation theta = " + Utilities::to_string(theta);
+      {
+        std::ostringstream value; // 6 digits, as the rest of the banner
+        value << theta;
+        scheme += " with numerical dissipation theta = " + value.str();
+      }
     if (integrator.get_scheme().is_static)
       text << "static problem (one solve)";
     else if (time_step_controller.is_adaptive())
