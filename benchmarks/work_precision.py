@@ -149,22 +149,18 @@ def bar_scene(key, base, scene, cells_list, position_column, across, levels, cri
         return [("Cells along length", cells)] + across(cells)
 
     for p in [1, 2, 3]:
-        for cells in cells_list[p]:
-            tau = 1. / cells / (2. * p)
-            rows, summary = run("%s-p%d-uniform-%d" % (key, p, cells),
-                                scene_prm(base, scene, entries(cells)) + mesh_prm(p, tau))
-            results.setdefault(key, []).append(dict(
-                p=p, mesh="uniform", finest=cells, dofs=mean(column(rows, "dofs")),
-                time=run_time(summary), **bar_measures(rows, summary, position_column)))
-        # the same meshes with numerical dissipation (doc/algorithms.md)
-        for cells in cells_list[p]:
-            tau = 1. / cells / (2. * p)
-            rows, summary = run("%s-p%d-uniform-%d-theta-%g" % (key, p, cells, dissipation),
-                                scene_prm(base, scene, entries(cells)) +
-                                mesh_prm(p, tau, theta=dissipation))
-            results.setdefault(key, []).append(dict(
-                p=p, mesh=dissipative, finest=cells, dofs=mean(column(rows, "dofs")),
-                time=run_time(summary), **bar_measures(rows, summary, position_column)))
+        # uniform meshes, then the same with numerical dissipation
+        # (doc/algorithms.md)
+        for theta, mesh, suffix in [(0., "uniform", ""),
+                                    (dissipation, dissipative, "-theta-%g" % dissipation)]:
+            for cells in cells_list[p]:
+                tau = 1. / cells / (2. * p)
+                rows, summary = run("%s-p%d-uniform-%d%s" % (key, p, cells, suffix),
+                                    scene_prm(base, scene, entries(cells)) +
+                                    mesh_prm(p, tau, theta=theta))
+                results.setdefault(key, []).append(dict(
+                    p=p, mesh=mesh, finest=cells, dofs=mean(column(rows, "dofs")),
+                    time=run_time(summary), **bar_measures(rows, summary, position_column)))
         cells = cells_list[p][-1]
         for name, crit in criteria:
             tau = 1. / cells / (2. * p)

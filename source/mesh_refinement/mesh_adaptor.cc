@@ -213,21 +213,17 @@ namespace dyncontact
       };
       // the flagged cells start the spread, which goes as far as the
       // coarsest cell's limit
-      int        coarsest = int(max_level);
-      Point<dim> lower, upper; // of the mesh
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = std::numeric_limits<double>::max();
-          upper[d] = -std::numeric_limits<double>::max();
-        }
+      int coarsest = int(max_level);
+      // the largest x_d and -x_d of the cell centres
+      std::vector<double> bounds(2 * dim, -std::numeric_limits<double>::max());
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             coarsest = std::min(coarsest, cell->level());
             for (unsigned int d = 0; d < dim; ++d)
               {
-                lower[d] = std::min(lower[d], cell->center()[d]);
-                upper[d] = std::max(upper[d], cell->center()[d]);
+                bounds[d]       = std::max(bounds[d], cell->center()[d]);
+                bounds[dim + d] = std::max(bounds[dim + d], -cell->center()[d]);
               }
             if (cell->refine_flag_set())
               {
@@ -314,11 +310,10 @@ namespace dyncontact
             cell->clear_coarsen_flag();
             cell->set_refine_flag();
           }
+      Utilities::MPI::max(bounds, comm, bounds);
       double extent = 0.; // between the mesh's outermost cell centres
       for (unsigned int d = 0; d < dim; ++d)
-        extent +=
-          Utilities::fixed_power<2>(Utilities::MPI::max(upper[d], comm) +
-                                    Utilities::MPI::max(-lower[d], comm));
+        extent += Utilities::fixed_power<2>(bounds[d] + bounds[dim + d]);
       return {spread, std::sqrt(extent)};
     }
   } // namespace

@@ -465,15 +465,17 @@ namespace dyncontact
     // A u^{n+1}, which the next step's right-hand side needs, now: the
     // energy after this step reads it from the cache (CachedProduct)
     if (!scheme.is_static)
-      operators.stiffness_product(u);
-    if (theta > 0.)
       {
-        // theta du^T A du = theta du^T (A u^{n+1} - A u^n), from the two
-        // products the steps need anyway
-        VectorType &A_du = A_u_old;
-        A_du.sadd(-1., 1., operators.stiffness_product(u));
-        u_old.sadd(-1., 1., u);
-        report.numerical_dissipation = theta * (u_old * A_du);
+        const VectorType &A_u = operators.stiffness_product(u);
+        if (theta > 0.)
+          {
+            // theta du^T A du = theta du^T (A u^{n+1} - A u^n), from the two
+            // products the steps need anyway
+            VectorType &A_du = A_u_old;
+            A_du.sadd(-1., 1., A_u);
+            u_old.sadd(-1., 1., u);
+            report.numerical_dissipation = theta * (u_old * A_du);
+          }
       }
 
     // Gamma*_{h,C} (eq. 40): rows where the projection was active but the
