@@ -83,6 +83,11 @@ main(int argc, char **argv)
     {"matrix_free_step_with_amg",
      "subsection Contact solver\n  set Step matrix = matrix-free\n"
      "  set Preconditioner = AMG\nend\n"},
+    {"multigrid_with_assembled_step",
+     "subsection Contact solver\n  set Preconditioner = multigrid\nend\n"},
+    {"multigrid_linear_elements",
+     "subsection Contact solver\n  set Step matrix = matrix-free\n"
+     "  set Preconditioner = multigrid\nend\n"},
     {"front_widening_without_adaptation",
      "subsection Mesh refinement\n  set Front widening = 1\nend\n"},
     {"numerical_dissipation_above_half",

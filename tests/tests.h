@@ -256,6 +256,40 @@ namespace testing
     return largest;
   }
 
+  /// Two runs of one problem by different solvers: the largest
+  /// difference of their statistics apart from the iteration counts
+  /// (statistics_difference()), and the CG iterations of each in all.
+  struct SolverComparison
+  {
+    std::pair<double, std::string> difference;
+    double                         cg_a = 0., cg_b = 0.;
+  };
+
+  inline SolverComparison
+  compare_solvers(const Statistics &a, const Statistics &b)
+  {
+    SolverComparison result;
+    Statistics       a0 = a, b0 = b;
+    for (Statistics *s : {&a0, &b0})
+      for (const std::string column : {"active_set_iterations",
+                                       "projection_iterations",
+                                       "linear_iterations"})
+        for (unsigned int k = 0; k < s->columns.size(); ++k)
+          if (s->columns[k] == column)
+            for (auto &row : s->rows)
+              row[k] = 0.;
+    result.difference = statistics_difference(a0, b0);
+    const auto cg_a   = a.column("linear_iterations");
+    const auto cg_b   = b.column("linear_iterations");
+    for (unsigned int i = 0; i < cg_a.size() && i < cg_b.size(); ++i)
+      if (!std::isnan(cg_a[i]))
+        {
+          result.cg_a += cg_a[i];
+          result.cg_b += cg_b[i];
+        }
+    return result;
+  }
+
   /// The two bars (1 and 2 cells across) on a mesh adapted every 4 steps
   /// by the velocity's Kelly indicator and the contact zone: the extra
   /// The calls of the TimerOutput section @p section in the summary file

@@ -329,6 +329,8 @@ namespace dyncontact
   {
     if (amg)
       amg->vmult(y, x);
+    else if (H_preconditioner)
+      H_preconditioner(y, x);
     else
       {
         y = x;

@@ -55,7 +55,7 @@ namespace dyncontact
                "elastic (no viscous form)")
          << ", " << (system.matrices().lumped_mass() ? "lumped" : "consistent")
          << " mass\n   solver: active set, CG with "
-         << (integrator.uses_amg() ? "AMG" : "Jacobi")
+         << integrator.preconditioner_name()
          << (integrator.matrix_free() ? " on the matrix-free step operator" :
                                         "");
     if (integrator.matrix_free())
@@ -132,7 +132,7 @@ namespace dyncontact
     input.repeated_steps      = time_step_controller.n_repeated_steps();
     input.passed_output_times = time_step_controller.n_passed_output_times();
     input.step_matrices       = step_matrices;
-    input.uses_amg            = integrator.uses_amg();
+    input.preconditioner      = integrator.preconditioner_name();
     input.matrix_free         = integrator.matrix_free();
     input.inertia_ratio       = integrator.inertia_ratio();
     input.condition_bound     = integrator.condition_bound();

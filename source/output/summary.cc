@@ -41,7 +41,7 @@ namespace dyncontact
       }
 
     out << statistics_lines;
-    out << "preconditioner: " << (input.uses_amg ? "AMG" : "Jacobi")
+    out << "preconditioner: " << input.preconditioner
         << (input.matrix_free ? " on the matrix-free step operator" : "");
     if (input.matrix_free)
       out << " (largest S_ii/M_ii " << std::setprecision(3)

@@ -7,6 +7,7 @@
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/discrete_problem.h>
+#include <dyncontact/time_stepping/step_multigrid.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +51,27 @@ namespace dyncontact
       scheme.is_static || !solver_parameters.matrix_free_step;
     system =
       std::make_unique<SemiDiscreteSystem<dim>>(discretization, mapping, comm);
+    if (solver_parameters.preconditioner ==
+        ActiveSetSolver::Parameters::Preconditioner::multigrid)
+      {
+        AssertThrow(system_parameters.degree >= 2,
+                    ExcMessage(
+                      "Contact solver/Preconditioner = multigrid coarsens "
+                      "the Polynomial degree to 1, but the degree is "
+                      "already 1: for linear elements set 'Step matrix' to "
+                      "assembled and 'Preconditioner' to AMG or "
+                      "automatic."));
+        auto linear                  = discretization;
+        linear.degree                = 1;
+        linear.assembled_step_matrix = true;
+        coarse_system =
+          std::make_unique<SemiDiscreteSystem<dim>>(linear, mapping, comm);
+        multigrid = std::make_unique<StepMultigrid<dim>>(
+          *system,
+          *coarse_system,
+          solver_parameters.amg_smoothed_prolongator,
+          comm);
+      }
     typename ContactSetup<dim>::Parameters contact_parameters;
     contact_parameters.parse_parameters(prm);
     contact = std::make_unique<ContactSetup<dim>>(contact_parameters, comm);
@@ -91,6 +113,8 @@ namespace dyncontact
                            adapting ? "adaptation: DoFs and sparsity" :
                                       "setup: DoFs and sparsity");
       system->setup(triangulation, scene);
+      if (coarse_system)
+        coarse_system->setup(triangulation, scene);
       // the dynamic sparsity pattern's rows
       release_freed_memory();
       pcout << "   cells: " << triangulation.n_global_active_cells()
@@ -99,6 +123,11 @@ namespace dyncontact
     {
       TimerOutput::Scope t(timer, prefix + "assembly");
       system->assemble(scene);
+      if (coarse_system)
+        {
+          coarse_system->assemble(scene);
+          multigrid->reinit();
+        }
       if (scheme.is_static)
         check_rigid_motions(scene);
     }
@@ -150,11 +179,19 @@ namespace dyncontact
     near_null_space.translations = system->get_constant_modes();
     if (solver_parameters.amg_rotations)
       near_null_space.rotations = system->rotation_modes();
+    SystemMatrices matrices = system->matrices();
+    if (multigrid)
+      matrices.step_preconditioner = [this](const double      a,
+                                            const double      b,
+                                            const Product    &S_vmult,
+                                            const VectorType &S_diagonal) {
+        return multigrid->make_preconditioner(a, b, S_vmult, S_diagonal);
+      };
     integrator =
       std::make_unique<TimeIntegrator>(scheme,
                                        numerical_dissipation,
                                        time_step_controller.get_timestep(),
-                                       system->matrices(),
+                                       matrices,
                                        solver_parameters,
                                        system->locally_owned_dofs(),
                                        system->locally_relevant_dofs(),

@@ -96,17 +96,20 @@ namespace dyncontact
             system.stiffness_combination_diagonal(S_diagonal, a, b);
             S_diagonal += M_diagonal;
             step_matrix->stiffness_part.reinit(locally_owned, comm);
-            StepMatrix *const step = step_matrix.get();
+            StepMatrix *const step    = step_matrix.get();
+            const Product     S_vmult = [this, step, a, b](VectorType       &y,
+                                                       const VectorType &x) {
+              system.stiffness_combination_vmult(step->stiffness_part, x, a, b);
+              system.mass_vmult(y, x);
+              y += step->stiffness_part;
+            };
+            // p-multigrid, or Jacobi
             solver.set_operator(
-              [this, step, a, b](VectorType &y, const VectorType &x) {
-                system.stiffness_combination_vmult(step->stiffness_part,
-                                                   x,
-                                                   a,
-                                                   b);
-                system.mass_vmult(y, x);
-                y += step->stiffness_part;
-              },
-              S_diagonal);
+              S_vmult,
+              S_diagonal,
+              system.step_preconditioner ?
+                system.step_preconditioner(a, b, S_vmult, S_diagonal) :
+                Product());
           }
         else
           {

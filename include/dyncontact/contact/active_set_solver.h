@@ -73,7 +73,10 @@ namespace dyncontact
         /// is at most jacobi_condition_bound for certain, AMG otherwise
         automatic,
         amg,
-        jacobi
+        jacobi,
+        /// a two-level p-multigrid of the matrix-free S: Chebyshev
+        /// smoothing on S's diagonal, AMG on S of linear elements
+        multigrid
       };
       Preconditioner preconditioner = Preconditioner::automatic;
 
@@ -169,11 +172,11 @@ namespace dyncontact
       const MatrixType *preconditioner_matrix = nullptr,
       const double lumped_mass_ratio = std::numeric_limits<double>::infinity());
 
-    /// Whether CG is preconditioned by AMG (else by Jacobi).
-    bool
-    uses_amg() const
+    /// The name of CG's preconditioner: "AMG", "Jacobi" or "p-multigrid".
+    std::string
+    preconditioner_name() const
     {
-      return amg != nullptr;
+      return amg ? "AMG" : H_preconditioner ? "p-multigrid" : "Jacobi";
     }
 
     /// The bound of the condition number of diag(H)^{-1} H that
@@ -189,10 +192,14 @@ namespace dyncontact
 
     /**
      * Sets H, applied by @p vmult without a matrix, with its @p diagonal
-     * (copied); CG is preconditioned by Jacobi.
+     * (copied); CG is preconditioned by @p preconditioner, a symmetric
+     * positive definite approximation of H^{-1} on the space of the mesh
+     * constraints, if given, else by Jacobi.
      */
     void
-    set_operator(const Operator &vmult, const VectorType &diagonal);
+    set_operator(const Operator   &vmult,
+                 const VectorType &diagonal,
+                 const Operator   &preconditioner = Operator());
 
     /**
      * Sets H = diag(@p diagonal), a lumped mass (copied);
@@ -345,7 +352,9 @@ namespace dyncontact
     /// applied by H_operator.
     const MatrixType *H = nullptr;
     Operator          H_operator;
-    bool              pointwise = false;
+    /// CG's preconditioner for H_operator, if not Jacobi
+    Operator H_preconditioner;
+    bool     pointwise = false;
     /// Diagonal of H (owned entries) and its value at each row's
     /// eliminated DoF (the scaling c of the active-set criterion); the
     /// inverse of the diagonal for Jacobi.
@@ -380,6 +389,20 @@ namespace dyncontact
     const NearNullSpace *near_null_space = nullptr;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
   };
+
+
+
+  /**
+   * Trilinos ML's AMG of @p matrix with this program's settings (no
+   * dropping, 2 Chebyshev sweeps, the near-null space @p modes if not null,
+   * the tentative prolongator unless @p smoothed_prolongator): the
+   * preconditioner of ActiveSetSolver, and the coarse level of the
+   * p-multigrid of a matrix-free step matrix.
+   */
+  std::unique_ptr<TrilinosWrappers::PreconditionAMG>
+  make_amg(const MatrixType                     &matrix,
+           const ActiveSetSolver::NearNullSpace *modes,
+           const bool                            smoothed_prolongator);
 } // namespace dyncontact
 
 #endif

@@ -80,7 +80,14 @@ namespace dyncontact
     /// d = the diagonal of a A + b B (the assembled matrix's), without a
     /// matrix.
     std::function<void(VectorType &d, double a, double b)>
-                      stiffness_combination_diagonal;
+      stiffness_combination_diagonal;
+    /// The preconditioner of a step matrix S = M + a A + b B applied by
+    /// the product given, with the diagonal given; empty: Jacobi.
+    std::function<Product(double            a,
+                          double            b,
+                          const Product    &S_vmult,
+                          const VectorType &S_diagonal)>
+                      step_preconditioner;
     const VectorType *f = nullptr;
 
     /// Whether there is a viscous form B.

@@ -29,10 +29,10 @@ namespace dyncontact
     unsigned int passed_output_times = 0;
     unsigned int step_matrices       = 0;
     /// CG's preconditioner for the last step matrix (static: for A): AMG,
-    /// else Jacobi, and for Jacobi the bound of the condition number of S
-    /// scaled by its diagonal that 'automatic' decided by (infinite if the
+    /// Jacobi or p-multigrid, and for Jacobi the bound of the condition number
+    /// of S scaled by its diagonal that 'automatic' decided by (infinite if the
     /// choice was not automatic).
-    bool uses_amg = true;
+    std::string preconditioner = "AMG";
     /// whether S is applied without a matrix, and then max_i S_ii / M_ii
     bool   matrix_free     = false;
     double inertia_ratio   = 1.;

@@ -22,6 +22,8 @@ namespace dyncontact
   class SemiDiscreteSystem;
   template <int dim>
   class ContactSetup;
+  template <int dim>
+  class StepMultigrid;
 
   /**
    * What a step solves, on the current mesh: the triangulation, its
@@ -176,6 +178,10 @@ namespace dyncontact
     TimeStepController                      &time_step_controller;
     ActiveSetSolver::Parameters              solver_parameters;
     std::unique_ptr<SemiDiscreteSystem<dim>> system;
+    /// 'Contact solver/Preconditioner = multigrid': the same mesh with
+    /// linear elements, and the p-multigrid between the two
+    std::unique_ptr<SemiDiscreteSystem<dim>> coarse_system;
+    std::unique_ptr<StepMultigrid<dim>>      multigrid;
     std::unique_ptr<ContactSetup<dim>>       contact;
     std::unique_ptr<TimeIntegrator>          integrator;
     bool                                     warned_inertia = false;

@@ -161,12 +161,12 @@ namespace dyncontact
       return current->inertia_ratio;
     }
 
-    /// Whether CG is preconditioned by AMG for the current step matrix
-    /// (else by Jacobi).
-    bool
-    uses_amg() const
+    /// CG's preconditioner for the current step matrix: "AMG", "Jacobi"
+    /// or "p-multigrid".
+    std::string
+    preconditioner_name() const
     {
-      return current->solver->uses_amg();
+      return current->solver->preconditioner_name();
     }
 
     /// The bound of the condition number of the current S scaled by its
@@ -376,12 +376,11 @@ namespace dyncontact
     std::string
     inertia_warning() const;
 
-    /// Whether CG is preconditioned by AMG for the current step (else by
-    /// Jacobi).
-    bool
-    uses_amg() const
+    /// CG's preconditioner for the current step (StepOperators).
+    std::string
+    preconditioner_name() const
     {
-      return operators.uses_amg();
+      return operators.preconditioner_name();
     }
 
     /// StepOperators::matrix_free().
