@@ -20,7 +20,7 @@
 //   before the impact are round-off, and refine differently for the two).
 // Also on two MPI ranks (step_matrix_free.mpirun=2).
 
-#include "tests.h"
+#include "hertz_drop.h"
 
 namespace
 {
@@ -48,32 +48,6 @@ namespace
           << ", CG iterations within 5 %: "
           << check(std::abs(sum_b - sum_a) <= 0.05 * sum_a && sum_a > 0.)
           << "\n";
-  }
-
-  std::string
-  hertz_prm(const unsigned int degree, const std::string &mass)
-  {
-    return "set Dimension = 2\n"
-           "set Polynomial degree = " +
-           std::to_string(degree) +
-           "\n"
-           "set Output directory = output-hertz\n" +
-           scene_prm("hertz",
-                     "    set Radius = 1\n    set Load = 0.005\n"
-                     "    set Drop velocity = 0.1\n"
-                     "    set Initial gap = 0.01\n"
-                     "    set Contact zone refinements = 2\n") +
-           "subsection Mesh\n  set Initial global refinements = 1\nend\n"
-           "subsection Material\n  set Young's modulus = 1\n"
-           "  set Poisson's ratio = 0.3\n  set Density = 1\n"
-           "  set Viscous shear modulus = 0.01\n"
-           "  set Viscous Lame parameter = 0.01\nend\n"
-           "subsection Time integration\n  set Scheme = N-CS++\n"
-           "  set Time step = 0.01\n  set End time = 0.25\n"
-           "  set Mass matrix = " +
-           mass +
-           "\nend\n"
-           "subsection Output\n  set Write vtu = false\nend\n";
   }
 } // namespace
 

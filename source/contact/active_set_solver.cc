@@ -162,9 +162,10 @@ namespace dyncontact
       "one AMG V-cycle (the settings above). It needs no matrix of the "
       "run's degree, and its CG iterations grow far less with tau c/h "
       "than Jacobi's; one costs about three products with S. Take it "
-      "where the banner's largest S_ii/M_ii is above about 100 (tau c/h "
-      "above about 3 for Q2, h the cell size): on the 3D bar with Q2 "
-      "(2.3e5 DoFs) a step took 0.41 of Jacobi's time at tau = 8 h/c, "
+      "where the banner's largest S_ii/M_ii is above about 50 (about "
+      "1 + 4.5 (tau c/h)^2 for Q2 and 1 + 19 (tau c/h)^2 for Q3, h the "
+      "cell size: tau c/h above about 3.3 and 1.6): on the 3D bar with Q2 "
+      "(2.3e5 DoFs) a step took 0.52 of Jacobi's time at tau = 8 h/c, "
       "1.08 times at tau = 2 h/c and 2.2 times at tau = h/2c "
       "(doc/results.md). The L2 projection with a consistent mass takes "
       "AMG.");

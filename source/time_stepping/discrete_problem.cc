@@ -69,6 +69,7 @@ namespace dyncontact
         multigrid = std::make_unique<StepMultigrid<dim>>(
           *system,
           *coarse_system,
+          solver_parameters.amg_rotations,
           solver_parameters.amg_smoothed_prolongator,
           comm);
       }

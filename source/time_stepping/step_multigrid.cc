@@ -78,6 +78,8 @@ namespace dyncontact
   struct StepMultigrid<dim>::Transfer
   {
     MGTwoLevelTransfer<dim, LAVector> two_level;
+    /// AMG's near-null space on the linear level
+    ActiveSetSolver::NearNullSpace modes;
   };
 
 
@@ -85,10 +87,12 @@ namespace dyncontact
   template <int dim>
   StepMultigrid<dim>::StepMultigrid(const SemiDiscreteSystem<dim> &fine,
                                     const SemiDiscreteSystem<dim> &coarse,
+                                    const bool                     rotations,
                                     const bool     smoothed_prolongator,
                                     const MPI_Comm comm)
     : fine(fine)
     , coarse(coarse)
+    , rotations(rotations)
     , smoothed_prolongator(smoothed_prolongator)
     , comm(comm)
   {}
@@ -111,6 +115,9 @@ namespace dyncontact
                                                    coarse.get_dof_handler(),
                                                    fine.get_constraints(),
                                                    coarse.get_constraints());
+    transfer->modes.translations = coarse.get_constant_modes();
+    if (rotations)
+      transfer->modes.rotations = coarse.rotation_modes();
   }
 
 
@@ -127,9 +134,8 @@ namespace dyncontact
 
     // the coarse level: S_1 assembled, and its AMG
     coarse.assemble_stiffness_matrix(cycle->S_coarse, a, b, 1.);
-    ActiveSetSolver::NearNullSpace modes;
-    modes.translations = coarse.get_constant_modes();
-    cycle->amg = make_amg(cycle->S_coarse, &modes, smoothed_prolongator);
+    cycle->amg =
+      make_amg(cycle->S_coarse, &transfer->modes, smoothed_prolongator);
 
     // the fine level: Chebyshev on S's diagonal
     cycle->fine_operator.S = S_vmult;
@@ -149,9 +155,11 @@ namespace dyncontact
     for (auto &value : inverse)
       value = 1. / value;
     // degree 1, a Jacobi step damped by the estimate of S's largest
-    // eigenvalue: measured on the 3D bar with Q2 (2.3e5 DoFs, tau = 8 h/c,
-    // 7 steps), 216 CG iterations and 21.7 s, against 212 and 36.5 s with
-    // degree 2 and 1422 and 56.4 s with Jacobi alone
+    // eigenvalue: measured on the 3D bar of benchmarks/step_operator.py
+    // with Q2 and 60 cells along (2.3e5 DoFs), tau = 8 h/c, End time 6
+    // tau (7 steps, the contact event located inside one): 216 CG
+    // iterations and 21.7 s, against 212 and 36.5 s with degree 2 and 1422
+    // and 56.4 s with Jacobi alone
     data.degree              = 1;
     data.smoothing_range     = 20.;
     data.eig_cg_n_iterations = 12;

@@ -30,16 +30,18 @@ namespace dyncontact
   {
   public:
     /// On the systems of degree p (@p fine) and 1 (@p coarse), which must
-    /// outlive this object; AMG with the smoothed prolongator if
-    /// @p smoothed_prolongator.
+    /// outlive this object; AMG with the infinitesimal rotations in its
+    /// near-null space if @p rotations, with the smoothed prolongator if
+    /// @p smoothed_prolongator ('Contact solver/AMG ...').
     StepMultigrid(const SemiDiscreteSystem<dim> &fine,
                   const SemiDiscreteSystem<dim> &coarse,
+                  const bool                     rotations,
                   const bool                     smoothed_prolongator,
                   const MPI_Comm                 comm);
     ~StepMultigrid();
 
-    /// The transfer between the levels, after both systems were set up on
-    /// the current mesh.
+    /// The transfer between the levels and AMG's near-null space, after
+    /// both systems were set up on the current mesh.
     void
     reinit();
 
@@ -59,6 +61,7 @@ namespace dyncontact
     struct Transfer;
     const SemiDiscreteSystem<dim> &fine;
     const SemiDiscreteSystem<dim> &coarse;
+    const bool                     rotations;
     const bool                     smoothed_prolongator;
     const MPI_Comm                 comm;
     std::shared_ptr<Transfer>      transfer;
