@@ -19,30 +19,46 @@ restored'), split into its parts:
   S           'adaptation: step matrix and preconditioner'
   restore     'adaptation: constraints restored'
 each but the first over n, and their sum in steps of the same run.
+--tau-ratio R sets tau = R h_min / (p c) (default 1/2; the node spacing
+is h_min / p) and the runs to at least 60 steps, leaves out the Kelly
+runs, 3D p = 1 (2.4e5 DoFs, half an hour) and the bar below, and adds
+for p >= 2 the recovery runs with 'Contact solver/Preconditioner =
+multigrid' (criterion 'recovery mg'), the preconditioner for large tau.
 Then issue 31's bar to T = 2.5 s (2D, p = 1, 32 cells along, levels 0 to 2,
 tau = 1/256) with each criterion against the uniform mesh of its finest
 level: the energy-norm error at T, the mean DoFs and the time loop's wall
 time (summary.txt) without the sampled error norms.
 One rank, Release build.
 Usage, from the repository's top folder after tools/setup.sh:
-    benchmarks/adaptation_cost.py [build/dyncontact]"""
+    benchmarks/adaptation_cost.py [build/dyncontact]
+                                  [--tau-ratio R]"""
 import csv
 import os
 import re
 import subprocess
 import sys
 
-executable = sys.argv[1] if len(sys.argv) > 1 else "build/dyncontact"
+from options import take_option
+
+arguments = sys.argv[1:]
+tau_ratio = take_option(arguments, "--tau-ratio", float)
+executable = arguments[0] if arguments else "build/dyncontact"
 folder = "results-adaptation-cost"
 os.makedirs(folder, exist_ok=True)
 
 # (dimension, degree, coarse cells along the length, end time)
 cases = [(2, 1, 128, 0.15), (2, 2, 64, 0.15), (2, 3, 32, 0.15),
          (3, 1, 32, 0.125), (3, 2, 16, 0.125)]
-# (label, criterion, step matrix)
-criteria = [("kelly", "kelly velocity", "assembled"),
-            ("recovery", "recovery velocity", "assembled"),
-            ("recovery mf", "recovery velocity", "matrix-free")]
+# (label, criterion, step matrix, preconditioner)
+criteria = [("kelly", "kelly velocity", "assembled", "automatic"),
+            ("recovery", "recovery velocity", "assembled", "automatic"),
+            ("recovery mf", "recovery velocity", "matrix-free", "automatic")]
+if tau_ratio:
+    # (3D p = 1 at large tau: 2.4e5 DoFs, about 6 s per step assembled and
+    # more matrix-free, half an hour for the two runs: left out)
+    cases = [case for case in cases if case[:2] != (3, 1)]
+    criteria = criteria[1:] + [("recovery mg", "recovery velocity",
+                                "matrix-free", "multigrid")]
 parts = [("indicators", ["adaptation: indicators and flags"]),
          ("refine", ["adaptation: refinement and transfer"]),
          ("dofs", ["adaptation: DoFs and sparsity"]),
@@ -52,9 +68,12 @@ parts = [("indicators", ["adaptation: indicators and flags"]),
 
 
 def run(name, dim, degree, cells, end, criterion, tau=None, levels=2,
-        step_matrix="assembled"):
+        step_matrix="assembled", preconditioner="automatic"):
     h_min = 1.0 / (cells * 2 ** levels)
-    tau = tau or h_min / (2 * degree)
+    if not tau:
+        tau = (tau_ratio or 0.5) * h_min / degree
+        if tau_ratio:
+            end = max(end, 60 * tau)
     prm = os.path.join(folder, name + ".prm")
     with open(prm, "w") as f:
         f.write("""set Dimension = %d
@@ -82,14 +101,16 @@ subsection Time integration
   set Mass matrix = lumped
 end
 subsection Contact solver
-  set Step matrix = %s
+  set Step matrix = %s%s
 end
 subsection Output
   set Output interval = 0.5
   set Write vtu = false
 end
 """ % (dim, degree, os.path.join(folder, name), cells, tau, end,
-       step_matrix))
+       step_matrix,
+       "\n  set Preconditioner = " + preconditioner
+       if preconditioner != "automatic" else ""))
         if criterion:
             f.write("""subsection Mesh refinement
   set Refinement interval = 2
@@ -119,10 +140,14 @@ print("| dim | p | criterion | mean DoFs | adaptations changing the mesh "
       "| adaptation (ms) | in steps |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for dim, degree, cells, end in cases:
-    for label, criterion, step_matrix in criteria:
-        name = "%dd_q%d_%s" % (dim, degree, label.replace(" ", "_"))
+    for label, criterion, step_matrix, preconditioner in criteria:
+        if preconditioner == "multigrid" and degree < 2:
+            continue
+        name = "%dd_q%d_%s%s" % (dim, degree, label.replace(" ", "_"),
+                                 "_tau%g" % tau_ratio if tau_ratio else "")
         sections, dofs, _ = run(name, dim, degree, cells, end, criterion,
-                                step_matrix=step_matrix)
+                                step_matrix=step_matrix,
+                                preconditioner=preconditioner)
         time, calls = sections["time step"]
         step = time / calls
         attempts = sections["adaptation: indicators and flags"][1]
@@ -139,6 +164,8 @@ for dim, degree, cells, end in cases:
                  total / step))
         sys.stdout.flush()
 
+if tau_ratio:
+    sys.exit(0)
 print()
 print("| bar to T = 2.5 s | error at T | mean DoFs | time loop without "
       "sampled norms (s) |")

@@ -28,17 +28,11 @@ import re
 import subprocess
 import sys
 
+from options import take_option
+
 arguments = sys.argv[1:]
-fixed_tau = None
-if "--tau" in arguments:
-    k = arguments.index("--tau")
-    fixed_tau = float(arguments[k + 1])
-    del arguments[k:k + 2]
-preconditioner = None
-if "--preconditioner" in arguments:
-    k = arguments.index("--preconditioner")
-    preconditioner = arguments[k + 1]
-    del arguments[k:k + 2]
+fixed_tau = take_option(arguments, "--tau", float)
+preconditioner = take_option(arguments, "--preconditioner")
 executable = arguments[0] if arguments else "build/dyncontact"
 sizes = [int(n) for n in arguments[1:]] or [60, 80, 100, 120, 160, 200]
 os.makedirs("results-scaling", exist_ok=True)

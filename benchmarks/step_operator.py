@@ -26,17 +26,11 @@ import re
 import subprocess
 import sys
 
+from options import take_option
+
 arguments = sys.argv[1:]
-cells_p1 = 120
-if "--cells" in arguments:
-    k = arguments.index("--cells")
-    cells_p1 = int(arguments[k + 1])
-    del arguments[k:k + 2]
-tau_ratio = 0.5
-if "--tau-ratio" in arguments:
-    k = arguments.index("--tau-ratio")
-    tau_ratio = float(arguments[k + 1])
-    del arguments[k:k + 2]
+cells_p1 = take_option(arguments, "--cells", int, 120)
+tau_ratio = take_option(arguments, "--tau-ratio", float, 0.5)
 steps = 8 if tau_ratio <= 1 else 4
 executable = arguments[0] if arguments else "build/dyncontact"
 degrees = [int(p) for p in arguments[1:]] or [1, 2, 3]

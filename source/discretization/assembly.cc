@@ -376,8 +376,14 @@ namespace dyncontact
   void
   SemiDiscreteSystem<dim>::assemble(const Scene<dim> &scene)
   {
-    const auto          tractions   = boundary_tractions(scene);
-    const auto          contact_ids = scene.all_contact_boundary_ids();
+    // (the multigrid's linear level needs neither the load nor w)
+    const auto tractions =
+      parameters.multigrid_level ?
+        std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>() :
+        boundary_tractions(scene);
+    const auto          contact_ids = parameters.multigrid_level ?
+                                        std::vector<types::boundary_id>() :
+                                        scene.all_contact_boundary_ids();
     CellTerms<dim>      terms(mapping, fe, scalar_fe, parameters.lumped_mass);
     std::vector<double> bad_cell; // centre and body of an inverted cell
     Vector<double>      cell_lumped_mass(fe.n_dofs_per_cell());
@@ -415,8 +421,11 @@ namespace dyncontact
             }
           else
             mass_adder->add(dof_indices, terms.mass);
-          load.add(dof_indices, terms.load);
-          boundary_weights.add(dof_indices, terms.boundary_weights);
+          if (!parameters.multigrid_level)
+            {
+              load.add(dof_indices, terms.load);
+              boundary_weights.add(dof_indices, terms.boundary_weights);
+            }
         }
 
     if (parameters.lumped_mass)
@@ -424,9 +433,10 @@ namespace dyncontact
     else
       mass_matrix.compress(VectorOperation::add);
     check_for_inverted_cells<dim>(bad_cell, comm);
+    if (parameters.multigrid_level)
+      return;
     load.compress(VectorOperation::add);
     boundary_weights.compress(VectorOperation::add);
-
     elastic_operator.reinit(mapping, dof_handler, materials);
     stiffness_product.reinit(
       [this](VectorType &y, const VectorType &x) { stiffness_vmult(y, x); });

@@ -104,8 +104,11 @@ namespace dyncontact
     stiffness_product.reinit(nullptr);
     viscous = scene.is_viscous();
 
-    load.reinit(locally_owned, comm);
-    boundary_weights.reinit(locally_owned, comm);
+    if (!parameters.multigrid_level)
+      {
+        load.reinit(locally_owned, comm);
+        boundary_weights.reinit(locally_owned, comm);
+      }
     index_owned_nodes(scene.n_bodies());
   }
 

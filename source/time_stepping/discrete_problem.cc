@@ -64,6 +64,7 @@ namespace dyncontact
         auto linear                  = discretization;
         linear.degree                = 1;
         linear.assembled_step_matrix = true;
+        linear.multigrid_level       = true;
         coarse_system =
           std::make_unique<SemiDiscreteSystem<dim>>(linear, mapping, comm);
         multigrid = std::make_unique<StepMultigrid<dim>>(

@@ -148,6 +148,10 @@ namespace dyncontact
       /// matrix = assembled, or a static problem); else a lumped mass needs
       /// no sparsity pattern, and none is built.
       bool assembled_step_matrix = true;
+      /// The linear level of the p-multigrid (Contact solver/Preconditioner
+      /// = multigrid): M and the assembled a A + b B + m M only; no load, no
+      /// boundary weights and no matrix-free A and B are built.
+      bool multigrid_level = false;
     };
 
     SemiDiscreteSystem(const Parameters   &parameters,
@@ -162,7 +166,8 @@ namespace dyncontact
           const Scene<dim>                                &scene);
 
     /// M (the diagonal only if lumped), the matrix-free A and B, f and the
-    /// boundary weights w; checks that no cell is inverted.
+    /// boundary weights w (only M on Parameters::multigrid_level); checks
+    /// that no cell is inverted.
     void
     assemble(const Scene<dim> &scene);
 
