@@ -7,6 +7,7 @@
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
 
+#include <dyncontact/base/vector_copy.h>
 #include <dyncontact/discretization/elastic_operator.h>
 
 #include <algorithm>
@@ -153,11 +154,7 @@ namespace dyncontact
                               const double                         a,
                               const double                         b) const
   {
-    // the owned entries of both vector types are the owned DoFs in
-    // increasing order
-    AssertDimension(src.locally_owned_size(), data->src.locally_owned_size());
-    AssertDimension(dst.locally_owned_size(), data->dst.locally_owned_size());
-    std::copy(src.begin(), src.end(), data->src.begin());
+    copy_owned(data->src, src);
     data->matrix_free
       .template cell_loop<typename Data::LAVector, typename Data::LAVector>(
         [&](const MatrixFree<dim, double>               &matrix_free,
@@ -169,7 +166,7 @@ namespace dyncontact
         data->dst,
         data->src,
         true);
-    std::copy(data->dst.begin(), data->dst.end(), dst.begin());
+    copy_owned(dst, data->dst);
   }
 
 
@@ -183,10 +180,9 @@ namespace dyncontact
     using LAVector                             = typename Data::LAVector;
     using Vectorized                           = typename Data::Vectorized;
     const MatrixFree<dim, double> &matrix_free = data->matrix_free;
-    AssertDimension(field.locally_owned_size(), data->src.locally_owned_size());
-    LAVector x;
+    LAVector                       x;
     matrix_free.initialize_dof_vector(x);
-    std::copy(field.begin(), field.end(), x.begin());
+    copy_owned(x, field);
     x.update_ghost_values();
 
     // int psi_i and int psi_i d_k x (k < dim), each DoF of the layout

@@ -4,26 +4,15 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/multigrid/mg_transfer_global_coarsening.h>
 
+#include <dyncontact/base/vector_copy.h>
 #include <dyncontact/contact/active_set_solver.h>
 #include <dyncontact/time_stepping/step_multigrid.h>
-
-#include <algorithm>
 
 namespace dyncontact
 {
   namespace
   {
     using LAVector = LinearAlgebra::distributed::Vector<double>;
-
-    /// The owned entries of both vector types are the owned DoFs in
-    /// increasing order.
-    template <typename To, typename From>
-    void
-    copy_owned(To &to, const From &from)
-    {
-      AssertDimension(to.locally_owned_size(), from.locally_owned_size());
-      std::copy(from.begin(), from.end(), to.begin());
-    }
 
     /// S of the fine level for deal.II's Chebyshev smoother, which works
     /// on deal.II's vectors.
