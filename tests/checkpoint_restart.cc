@@ -9,9 +9,11 @@
 // output time stays where it was), and two bars adapted by the recovery
 // indicator, stopped at t = 0.6375 s, where the finer side of the interface
 // is no longer the slave side chosen at t = 0, on 1 and on 2 ranks (the
-// checkpoint keeps that side). A resumed
-// input whose critical parameters differ (the time step) is refused with a
-// message naming the parameter. Also on two MPI ranks
+// checkpoint keeps that side), and a chain of four bars adapted by the
+// recovery indicator, stopped at a step after which the adaptation leaves
+// the mesh as it was (the resumed run makes its integrator all the same).
+// A resumed input whose critical parameters differ (the time step) is
+// refused with a message naming the parameter. Also on two MPI ranks
 // (checkpoint_restart.mpirun=2) with the same output.
 
 #include "tests.h"
@@ -34,8 +36,19 @@ main(int argc, char **argv)
     unsigned int cells = 10;
     double       tau   = 0.025;
     // (the recovery indicator's meshes differ between 1 and 2 ranks)
-    bool print_final_state = true;
+    bool   print_final_state = true;
+    double end               = 2.5;
   };
+  // four bodies, adapted every 4 steps by the recovery indicator; at step
+  // 200 the adaptation leaves the mesh as it is
+  const std::string chain =
+    scene_prm("bar chain",
+              "    set Length = 1\n    set Height = 0.1\n"
+              "    set Impact velocity = 1\n    set Initial gap = 0.1\n"
+              "    set Cells along length = 10\n    set Cells across = 1\n") +
+    "subsection Mesh refinement\n  set Refinement interval = 4\n"
+    "  set Maximum level = 2\n  set Criteria = recovery velocity\n"
+    "  set Refine fraction = 0.2\n  set Coarsen fraction = 0.3\nend\n";
   const std::string sampled = "subsection Output\n  set Output interval = 0.1\n"
                               "end\nsubsection Postprocess\n"
                               "  subsection Error energy norm\n"
@@ -52,7 +65,16 @@ main(int argc, char **argv)
              102,
              40,
              1. / 160.,
-             false}})
+             false},
+        Case{"adaptive bar chain, no change at the split",
+             "chain",
+             chain,
+             2.5,
+             200,
+             10,
+             0.0125,
+             false,
+             5.}})
     {
       auto prm =
         [&](const std::string &run, const double end, const bool resume) {
@@ -62,9 +84,9 @@ main(int argc, char **argv)
                  std::to_string(c.split_step) + "\n" +
                  "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
         };
-      const Statistics full = run(prm("full", 2.5, false));
+      const Statistics full = run(prm("full", c.end, false));
       run(prm("split", c.split, false));
-      const Statistics resumed = run(prm("split", 2.5, true));
+      const Statistics resumed = run(prm("split", c.end, true));
 
       // a sampled column is sampled in the same rows, but for the first
       // run's last step, which samples it

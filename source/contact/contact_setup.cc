@@ -114,14 +114,15 @@ namespace dyncontact
     locally_relevant           = system.locally_relevant_dofs();
     const VectorType w_ghosted = system.ghosted(system.get_boundary_weights());
 
+    const auto pairs = contact_pairs(scene);
     if (const auto obstacle = scene.obstacle())
       add_obstacle_rows(*obstacle,
+                        pairs.size(),
                         boundary_nodes(system,
                                        mapping,
                                        scene.contact_boundary_ids()),
                         w_ghosted,
                         system.get_constraints());
-    const auto pairs = contact_pairs(scene);
     for (unsigned int pair_index = 0; pair_index < pairs.size(); ++pair_index)
       add_pair_rows(scene,
                     pairs[pair_index],
@@ -287,6 +288,7 @@ namespace dyncontact
   void
   ContactSetup<dim>::add_obstacle_rows(
     const RigidObstacle<dim>        &obstacle,
+    const unsigned int               pair_index,
     const std::vector<BoundaryNode> &nodes,
     const VectorType                &w_ghosted,
     const AffineConstraints<double> &constraints)
@@ -297,6 +299,7 @@ namespace dyncontact
         const Point<dim> &x = node.x;
         ContactRow        row;
         row.n_components = dim;
+        row.pair         = pair_index;
         for (unsigned int d = 0; d < dim; ++d)
           {
             row.entries.emplace_back(node.dofs[d], -obstacle.normal[d]);
@@ -433,11 +436,12 @@ namespace dyncontact
             projection.normal = -image->master_normal;
             projection.gap    = -image->gap;
           }
-        ContactRow        row    = make_two_body_row<dim>(x,
+        ContactRow row           = make_two_body_row<dim>(x,
                                                 node.dofs,
                                                 projection,
                                                 phi.faces()[image->face],
                                                 system.get_fe().degree);
+        row.pair                 = pair_index;
         const std::size_t n_rows = rows.size();
         add_row(row, node.scalar_dof, w_ghosted, system.get_constraints());
         if (rows.size() == n_rows &&
@@ -445,9 +449,13 @@ namespace dyncontact
           ++n_clamped;
       }
     refuse_clamped_slave_nodes(n_clamped, pair_index, slave, comm);
-    pcout << "   contact pair: slave is side " << slave + 1 << " ("
-          << n_faces[slave] << " faces), master side " << 2 - slave << " ("
-          << n_faces[1 - slave] << " faces)" << std::endl;
+    pcout << "   contact pair"
+          << (scene.contact_pairs().size() > 1 ?
+                " " + std::to_string(pair_index + 1) :
+                std::string())
+          << ": slave is side " << slave + 1 << " (" << n_faces[slave]
+          << " faces), master side " << 2 - slave << " (" << n_faces[1 - slave]
+          << " faces)" << std::endl;
     master_surfaces.push_back(sides[1 - slave]);
   }
 

@@ -178,8 +178,9 @@ namespace dyncontact
       // the run ended on a step after which the mesh adapts: adapt now, as
       // the uninterrupted run did (the active sets refer to the old mesh)
       refine_mesh();
-    else
+    if (!p.has_integrator())
       {
+        // no adaptation, or one that left the mesh as it was
         p.make_integrator(*timer);
         p.get_integrator().load_active_sets(flags);
       }

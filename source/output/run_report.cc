@@ -43,12 +43,18 @@ namespace dyncontact
     text << ")\n   contact: ";
     if (!scene.has_contact())
       text << "none (no rows, no contact search)";
-    else if (scene.obstacle())
+    else if (const std::size_t n_pairs = scene.contact_pairs().size();
+             n_pairs == 0)
       text << "rigid obstacle (no contact search), " << contact.n_global_rows()
            << " rows";
-    else
+    else if (n_pairs == 1 && !scene.obstacle())
       text << "two bodies through phi_h, " << contact.n_global_rows()
            << " rows on the slave side";
+    else
+      text << n_pairs << " pair" << (n_pairs > 1 ? "s" : "")
+           << " of bodies through phi_h"
+           << (scene.obstacle() ? " and a rigid obstacle" : "") << ", "
+           << contact.n_global_rows() << " rows";
     text << "\n   material: "
          << (system.is_viscous() ?
                "viscoelastic (Kelvin-Voigt, viscous form B)" :

@@ -25,13 +25,14 @@ namespace dyncontact
     namespace
     {
       /// "contact intervals: n: [t0, t1], ... s": an interval runs from the
-      /// first to the last step of a run of steps with active rows (the
-      /// first 20 of them are listed).
+      /// first to the last step of a run of steps with active rows (in the
+      /// column @p column; the first 20 of them are listed).
       std::string
-      contact_intervals(const Statistics &s)
+      contact_intervals(const Statistics  &s,
+                        const std::string &column = "active_nodes")
       {
         const auto               time   = s.column("time");
-        const auto               active = s.column("active_nodes");
+        const auto               active = s.column(column);
         const unsigned int       last   = s.rows.size() - 1;
         std::vector<std::string> intervals;
         for (unsigned int r = 0; r <= last; ++r)
@@ -191,5 +192,113 @@ namespace dyncontact
                                       30,
                                       "active set, contact force and "
                                       "pressure, penetration")
+
+
+
+    /**
+     * The contact of each pair where a scene has more than one (two-body
+     * pairs in the order of Scene::contact_pairs(), then the rigid
+     * obstacle): active rows, contact force and meas Gamma* (eq. 40) per
+     * pair, and each pair's contact intervals in the summary.
+     */
+    template <int dim>
+    class ContactPairs : public Interface<dim>
+    {
+    public:
+      bool
+      applies() const override
+      {
+        return n_pairs() > 1;
+      }
+
+      std::string
+      summary(const Statistics &s, const SummaryInput &input) const override
+      {
+        std::ostringstream out;
+        out << std::setprecision(6);
+        const std::string force = input.dim == 2 ? "N/m" : "N";
+        const auto        time  = s.column("time");
+        for (unsigned int k = 1; k <= n_pairs(); ++k)
+          {
+            const std::string pair = "pair" + std::to_string(k);
+            out << "pair " << k
+                << (k > this->get_scene().contact_pairs().size() ?
+                      " (rigid obstacle)" :
+                      "")
+                << ": ";
+            if (input.is_static)
+              out << "active nodes: "
+                  << s.column("active_nodes_" + pair)[s.rows.size() - 1]
+                  << ", ";
+            else
+              {
+                const std::string intervals =
+                  contact_intervals(s, "active_nodes_" + pair);
+                out << intervals.substr(0, intervals.size() - 1) << "; ";
+              }
+            const unsigned int r = s.row_of_largest("contact_force_" + pair);
+            out << "peak contact force " << s.column("contact_force_" + pair)[r]
+                << " " << force;
+            if (!input.is_static)
+              out << " at t = " << time[r] << " s";
+            out << "\n";
+          }
+        return out.str();
+      }
+
+      unsigned int
+      summary_position() const override
+      {
+        return 11;
+      }
+
+      std::vector<std::string>
+      columns() const override
+      {
+        std::vector<std::string> names;
+        for (unsigned int k = 1; k <= n_pairs(); ++k)
+          for (const std::string name : {"active_nodes_pair",
+                                         "contact_force_pair",
+                                         "critical_measure_pair"})
+            names.push_back(name + std::to_string(k));
+        return names;
+      }
+
+      void
+      execute(std::vector<double> &row) override
+      {
+        const ContactRows  &rows   = this->get_contact().get_rows();
+        const StepReport   &report = this->get_step_report();
+        std::vector<double> sums(3 * n_pairs(), 0.);
+        for (unsigned int p = 0; p < rows.size(); ++p)
+          {
+            double *pair = &sums[3 * rows.rows[p].pair];
+            if (report.active[p])
+              {
+                pair[0] += 1.;
+                pair[1] += row_force(report, p);
+              }
+            if (p < report.critical.size() && report.critical[p])
+              pair[2] += rows.rows[p].weight;
+          }
+        Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
+        row.insert(row.end(), sums.begin(), sums.end());
+      }
+
+    private:
+      /// The two-body pairs and the obstacle.
+      unsigned int
+      n_pairs() const
+      {
+        return this->get_scene().contact_pairs().size() +
+               (this->get_scene().obstacle() ? 1 : 0);
+      }
+    };
+
+    DYNCONTACT_REGISTER_POSTPROCESSOR(ContactPairs,
+                                      "contact pairs",
+                                      31,
+                                      "active rows, contact force and meas "
+                                      "Gamma* of each contact pair")
   } // namespace Postprocess
 } // namespace dyncontact

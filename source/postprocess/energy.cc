@@ -226,5 +226,66 @@ namespace dyncontact
                                       10,
                                       "kinetic and elastic energy, viscous "
                                       "dissipation (Theorem 3.2)")
+
+
+
+    /**
+     * The energies of each body where a scene has more than one: E_kin,b =
+     * 1/2 udot_b^T M udot_b and E_el,b = 1/2 u_b^T A u_b - f_b^T u_b (M and
+     * A couple no bodies, so these sum to the totals of "energy").
+     */
+    template <int dim>
+    class BodyEnergy : public Interface<dim>
+    {
+    public:
+      bool
+      applies() const override
+      {
+        return this->get_scene().n_bodies() > 1;
+      }
+
+      std::vector<std::string>
+      columns() const override
+      {
+        std::vector<std::string> names;
+        for (const std::string energy : {"kinetic", "elastic"})
+          for (unsigned int b = 1; b <= this->get_scene().n_bodies(); ++b)
+            names.push_back("energy_" + energy + "_body" + std::to_string(b));
+        return names;
+      }
+
+      void
+      execute(std::vector<double> &row) override
+      {
+        const SemiDiscreteSystem<dim> &system   = this->get_system();
+        const unsigned int             n_bodies = this->get_scene().n_bodies();
+        const VectorType              &u        = this->get_solution();
+        const VectorType              &udot     = this->get_velocity();
+        const SystemMatrices           matrices = system.matrices();
+        VectorType                     M_udot;
+        matrices.mass_vmult(M_udot, udot);
+        // (A u is cached from the total energy)
+        const VectorType                 &A_u = matrices.stiffness_vmult(u);
+        const VectorType                 &f   = system.get_load();
+        std::vector<double>               sums(2 * n_bodies, 0.);
+        const std::vector<unsigned char> &slots = system.get_owned_dof_slots();
+        const double *M_v = M_udot.begin(), *v = udot.begin(),
+                     *A_x = A_u.begin(), *f_x = f.begin(), *x = u.begin();
+        for (std::size_t k = 0; k < slots.size(); ++k)
+          {
+            const unsigned int body = slots[k] / dim;
+            sums[body] += 0.5 * M_v[k] * v[k];
+            sums[n_bodies + body] += (0.5 * A_x[k] - f_x[k]) * x[k];
+          }
+        Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
+        row.insert(row.end(), sums.begin(), sums.end());
+      }
+    };
+
+    DYNCONTACT_REGISTER_POSTPROCESSOR(BodyEnergy,
+                                      "body energy",
+                                      11,
+                                      "kinetic and elastic energy of each "
+                                      "body")
   } // namespace Postprocess
 } // namespace dyncontact

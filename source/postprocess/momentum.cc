@@ -1,9 +1,9 @@
 // Linear momentum (Theorem 3.1): sum of M udot over the DoFs of each
-// displacement component, for all bodies, and for the second body alone in
-// two-body scenes. Mean displacement: the mass-weighted mean of u per
-// component and body, sum of M u over sum of M 1, the displacement of the
-// body's centre of mass (the position error of a body beside its
-// energy-norm error).
+// displacement component, for all bodies, and for each body after the first
+// alone (the first's is the total minus these). Mean displacement: the
+// mass-weighted mean of u per component and body, sum of M u over sum of M 1,
+// the displacement of the body's centre of mass (the position error of a body
+// beside its energy-norm error).
 
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/postprocess/interface.h>
@@ -50,10 +50,10 @@ namespace dyncontact
         std::vector<std::string> names = {"momentum_x",
                                           "momentum_y",
                                           "momentum_z"};
-        if (this->get_scene().n_bodies() == 2)
+        for (unsigned int b = 2; b <= this->get_scene().n_bodies(); ++b)
           for (const std::string name :
-               {"momentum_x_body2", "momentum_y_body2", "momentum_z_body2"})
-            names.push_back(name);
+               {"momentum_x", "momentum_y", "momentum_z"})
+            names.push_back(name + "_body" + std::to_string(b));
         return names;
       }
 
@@ -71,16 +71,15 @@ namespace dyncontact
           for (unsigned int d = 0; d < 3; ++d)
             momentum[d] += body_momentum[3 * b + d];
         row.insert(row.end(), momentum.begin(), momentum.end());
-        if (n_bodies == 2)
-          row.insert(row.end(), body_momentum.begin() + 3, body_momentum.end());
+        row.insert(row.end(), body_momentum.begin() + 3, body_momentum.end());
       }
     };
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Momentum,
                                       "momentum",
                                       20,
-                                      "linear momentum, total and of the "
-                                      "second body (Theorem 3.1)")
+                                      "linear momentum, total and of each "
+                                      "body after the first (Theorem 3.1)")
 
 
 

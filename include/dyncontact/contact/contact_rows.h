@@ -34,6 +34,10 @@ namespace dyncontact
     double gap = 0.;
     /// The boundary weight w_p = int_{Gamma_C} psi_p ds (m^{d-1}).
     double weight = 0.;
+    /// The contact pair of the row: its index in Scene::contact_pairs(); the
+    /// rows against the rigid obstacle come after the pairs (index = the
+    /// number of pairs).
+    unsigned int pair = 0;
     /// Which slave component an active row eliminates (largest |nu_i|
     /// among the components without other constraints).
     unsigned int eliminated = 0;

@@ -169,9 +169,11 @@ namespace dyncontact
             const VectorType                &w_ghosted,
             const AffineConstraints<double> &constraints);
 
-    /// The rows of the nodes @p nodes against the rigid obstacle.
+    /// The rows of the nodes @p nodes against the rigid obstacle, with the
+    /// pair index @p pair_index.
     void
     add_obstacle_rows(const RigidObstacle<dim>        &obstacle,
+                      const unsigned int               pair_index,
                       const std::vector<BoundaryNode> &nodes,
                       const VectorType                &w_ghosted,
                       const AffineConstraints<double> &constraints);

@@ -143,6 +143,13 @@ namespace dyncontact
     {
       return *contact;
     }
+    /// Whether make_integrator() has run (a resumed run's adaptation of an
+    /// unchanged mesh makes none).
+    bool
+    has_integrator() const
+    {
+      return integrator != nullptr;
+    }
     const TimeIntegrator &
     get_integrator() const
     {
