@@ -198,8 +198,9 @@ namespace dyncontact
     /**
      * The contact of each pair where a scene has more than one (two-body
      * pairs in the order of Scene::contact_pairs(), then the rigid
-     * obstacle): active rows, contact force and meas Gamma* (eq. 40) per
-     * pair, and each pair's contact intervals in the summary.
+     * obstacle): active rows and their measure, contact force and meas
+     * Gamma* (eq. 40) per pair, and each pair's contact intervals in the
+     * summary.
      */
     template <int dim>
     class ContactPairs : public Interface<dim>
@@ -227,21 +228,23 @@ namespace dyncontact
                       "")
                 << ": ";
             if (input.is_static)
-              out << "active nodes: "
-                  << s.column("active_nodes_" + pair)[s.rows.size() - 1]
-                  << ", ";
-            else
               {
-                const std::string intervals =
-                  contact_intervals(s, "active_nodes_" + pair);
-                out << intervals.substr(0, intervals.size() - 1) << "; ";
+                const unsigned int last = s.rows.size() - 1;
+                out << "active nodes: "
+                    << s.column("active_nodes_" + pair)[last] << ", measure "
+                    << s.column("active_measure_" + pair)[last] << " "
+                    << (input.dim == 2 ? "m" : "m^2") << ", contact force "
+                    << s.column("contact_force_" + pair)[last] << " " << force
+                    << "\n";
+                continue;
               }
+            const std::string intervals =
+              contact_intervals(s, "active_nodes_" + pair);
             const unsigned int r = s.row_of_largest("contact_force_" + pair);
-            out << "peak contact force " << s.column("contact_force_" + pair)[r]
-                << " " << force;
-            if (!input.is_static)
-              out << " at t = " << time[r] << " s";
-            out << "\n";
+            out << intervals.substr(0, intervals.size() - 1)
+                << "; peak contact force "
+                << s.column("contact_force_" + pair)[r] << " " << force
+                << " at t = " << time[r] << " s\n";
           }
         return out.str();
       }
@@ -258,6 +261,7 @@ namespace dyncontact
         std::vector<std::string> names;
         for (unsigned int k = 1; k <= n_pairs(); ++k)
           for (const std::string name : {"active_nodes_pair",
+                                         "active_measure_pair",
                                          "contact_force_pair",
                                          "critical_measure_pair"})
             names.push_back(name + std::to_string(k));
@@ -269,17 +273,18 @@ namespace dyncontact
       {
         const ContactRows  &rows   = this->get_contact().get_rows();
         const StepReport   &report = this->get_step_report();
-        std::vector<double> sums(3 * n_pairs(), 0.);
+        std::vector<double> sums(4 * n_pairs(), 0.);
         for (unsigned int p = 0; p < rows.size(); ++p)
           {
-            double *pair = &sums[3 * rows.rows[p].pair];
+            double *pair = &sums[4 * rows.rows[p].pair];
             if (report.active[p])
               {
                 pair[0] += 1.;
-                pair[1] += row_force(report, p);
+                pair[1] += rows.rows[p].weight;
+                pair[2] += row_force(report, p);
               }
             if (p < report.critical.size() && report.critical[p])
-              pair[2] += rows.rows[p].weight;
+              pair[3] += rows.rows[p].weight;
           }
         Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
         row.insert(row.end(), sums.begin(), sums.end());

@@ -18,7 +18,9 @@ namespace dyncontact
     // boundary ids of the Hertz scenes
     constexpr types::boundary_id curved_id = 1, top_id = 2, symmetry_x_id = 3,
                                  block_top_id = 4, block_bottom_id = 5,
-                                 free_id = 6, symmetry_z_id = 7;
+                                 free_id = 6, symmetry_z_id = 7,
+                                 // with the upper block
+      curved_upper_id = 8, upper_bottom_id = 9, upper_top_id = 10;
   } // namespace
 
 
@@ -96,7 +98,19 @@ namespace dyncontact
                       "0.1",
                       Patterns::Double(0., 1e9),
                       "Distance between the lowest point of the cylinder or "
-                      "ball and the block's top, in m (>= 0).");
+                      "ball and the block's top, in m (>= 0); with the upper "
+                      "block also between its top point and the upper "
+                      "block.");
+    prm.declare_entry(
+      "Upper block",
+      "false",
+      Patterns::Bool(),
+      "A third body: a block like the lower one (material 'Material of "
+      "body 2') above a whole cylinder or ball, Initial gap above its top "
+      "point. The Load then acts on the upper block's top, and the Drop "
+      "velocity moves the upper block with the cylinder or ball. Two "
+      "contact pairs (1: the lower block, 2: the upper block), both of "
+      "Hertz's solution in the static problem.");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -126,6 +140,7 @@ namespace dyncontact
     contact_refinements = prm.get_integer("Contact zone refinements");
     extra_refinements = prm.get_integer("Extra refinements of the curved body");
     matched_block_mesh = (prm.get("Block mesh") == "matched");
+    upper_block        = prm.get_bool("Upper block");
     prm.leave_subsection();
     prm.leave_subsection();
     const std::string where = "Scene/" + subsection + "/";
@@ -184,10 +199,14 @@ namespace dyncontact
   double
   HertzScene<dim>::impact_contact_size() const
   {
-    const double E      = effective_modulus();
-    const double rho    = this->material(0).density;
-    const double mass   = (dim == 2) ? 0.5 * M_PI * radius * radius * rho :
-                                       2. / 3. * M_PI * std::pow(radius, 3) * rho;
+    const double E    = effective_modulus();
+    const double rho  = this->material(0).density;
+    double       mass = (dim == 2) ? 0.5 * M_PI * radius * radius * rho :
+                                     2. / 3. * M_PI * std::pow(radius, 3) * rho;
+    if (upper_block)
+      // the whole body and the upper block drop
+      mass = 2. * mass + this->material(1).density * block_depth *
+                           std::pow(2. * block_width, dim - 1);
     const double energy = 0.5 * mass * drop_velocity * drop_velocity;
     // stored energy less the load's work over the indentation, for the
     // contact size s: increasing where it matters, negative at s -> 0
@@ -260,7 +279,7 @@ namespace dyncontact
       std::max(1., std::round(2. * block_depth / radius)) * columns;
     if (dim == 3)
       block *= columns;
-    return (dim == 2 ? 3. : 4.) + block;
+    return (upper_block ? 2. : 1.) * ((dim == 2 ? 3. : 4.) + block);
   }
 
 
@@ -275,6 +294,16 @@ namespace dyncontact
     const double            centre_height = radius + initial_gap;
     Triangulation<dim, dim> body;
     GridGenerator::quarter_hyper_ball(body, Point<dim>(), radius);
+    Triangulation<dim, dim> upper_half;
+    if (upper_block)
+      {
+        // the upper half: the same quarter disc (1/8 ball) lifted, merged
+        // into one body with the lower half
+        upper_half.copy_triangulation(body);
+        Tensor<1, dim> lift;
+        lift[1] = centre_height;
+        GridTools::shift(lift, upper_half);
+      }
     GridTools::transform(
       [&](const Point<dim> &p) {
         Point<dim> q = p;
@@ -283,6 +312,14 @@ namespace dyncontact
         return q;
       },
       body);
+    if (upper_block)
+      {
+        Triangulation<dim, dim> lower_half;
+        lower_half.copy_triangulation(body);
+        body.clear();
+        GridGenerator::merge_triangulations(
+          lower_half, upper_half, body, 1e-12 * radius, true);
+      }
 
     // the block [0, W] x [-D, 0] (x [0, W]), cells of about R/2 (matched:
     // the first column pi R/4 wide)
@@ -314,7 +351,19 @@ namespace dyncontact
                                                 lower,
                                                 upper);
 
-    merge_bodies<dim>({&body, &block}, tria);
+    // the upper block: the lower one lifted to y = 2 R + 2 g0
+    const double            upper_bottom = 2. * centre_height;
+    Triangulation<dim, dim> upper_block_mesh;
+    if (upper_block)
+      {
+        upper_block_mesh.copy_triangulation(block);
+        Tensor<1, dim> lift;
+        lift[1] = upper_bottom + block_depth;
+        GridTools::shift(lift, upper_block_mesh);
+        merge_bodies<dim>({&body, &block, &upper_block_mesh}, tria);
+      }
+    else
+      merge_bodies<dim>({&body, &block}, tria);
 
     const double tolerance = 1e-8 * radius;
     for (const auto &cell : tria.active_cell_iterators())
@@ -328,8 +377,16 @@ namespace dyncontact
             else if (dim == 3 && std::abs(c[dim - 1]) < tolerance)
               id = symmetry_z_id;
             else if (cell->material_id() == 0)
-              id = (std::abs(c[1] - centre_height) < tolerance) ? top_id :
-                                                                  curved_id;
+              id = upper_block ?
+                     (c[1] > centre_height ? curved_upper_id : curved_id) :
+                     (std::abs(c[1] - centre_height) < tolerance ? top_id :
+                                                                   curved_id);
+            else if (cell->material_id() == 2)
+              id = std::abs(c[1] - upper_bottom) < tolerance ?
+                     upper_bottom_id :
+                     (std::abs(c[1] - upper_bottom - block_depth) < tolerance ?
+                        upper_top_id :
+                        free_id);
             else if (std::abs(c[1]) < tolerance)
               id = block_top_id;
             else if (std::abs(c[1] + block_depth) < tolerance)
@@ -337,7 +394,7 @@ namespace dyncontact
             else
               id = free_id;
             cell->face(f)->set_boundary_id(id);
-            if (id == curved_id)
+            if (id == curved_id || id == curved_upper_id)
               cell->face(f)->set_manifold_id(0);
           }
     Point<dim> centre;
@@ -357,6 +414,13 @@ namespace dyncontact
     const double zone =
       std::max(2.5 * hertz_contact_size(), 1.5 * impact_contact_size()) +
       initial_gap;
+    // (and towards the upper one, with the upper block)
+    Point<dim> upper_point;
+    upper_point[1]      = 2. * radius + 2. * initial_gap;
+    const auto distance = [&](const Point<dim> &x) {
+      return upper_block ? std::min(x.norm(), x.distance(upper_point)) :
+                           x.norm();
+    };
     // (both bodies, then the curved body alone its extra times)
     for (unsigned int k = 0; k < contact_refinements + extra_refinements; ++k)
       {
@@ -364,7 +428,7 @@ namespace dyncontact
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned() &&
               (k < contact_refinements || cell->material_id() == 0) &&
-              cell->center().norm() < zone + 0.5 * cell->diameter())
+              distance(cell->center()) < zone + 0.5 * cell->diameter())
             {
               cell->set_refine_flag();
               ++flagged;
@@ -403,8 +467,12 @@ namespace dyncontact
     // choice, the finer side by mean face size, may take the block)
     if (matched_block_mesh)
       pair.slave_side = 0;
-
-    return {pair};
+    if (!upper_block)
+      return {pair};
+    ContactPair upper_pair = pair;
+    upper_pair.first_side  = {curved_upper_id};
+    upper_pair.second_side = {upper_bottom_id};
+    return {pair, upper_pair};
   }
 
 
@@ -441,7 +509,7 @@ namespace dyncontact
     // the share of the load on the meshed part: half (2D) or a quarter (3D)
     Tensor<1, dim> force;
     force[1] = -load / (dim == 2 ? 2. : 4.);
-    return {{top_id, force}};
+    return {{upper_block ? upper_top_id : top_id, force}};
   }
 
 
@@ -453,7 +521,7 @@ namespace dyncontact
   {
     Tensor<1, dim> v;
     (void)x;
-    if (body == 0)
+    if (body == 0 || body == 2)
       v[1] = -drop_velocity;
     return v;
   }

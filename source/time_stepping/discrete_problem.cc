@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace dyncontact
 {
@@ -143,8 +144,34 @@ namespace dyncontact
   void
   DiscreteProblem<dim>::check_rigid_motions(const Scene<dim> &scene) const
   {
-    const std::vector<unsigned int> unheld =
+    std::vector<unsigned int> unheld =
       unheld_rigid_motions(*system, scene.n_bodies());
+    // a body between two contacts (e.g. a ball between two blocks): a
+    // single free motion is left to them
+    std::vector<std::vector<types::boundary_id>> contacts;
+    for (const ContactPair &pair : scene.contact_pairs())
+      {
+        contacts.push_back(pair.first_side);
+        contacts.push_back(pair.second_side);
+      }
+    contacts.push_back(scene.contact_boundary_ids());
+    std::vector<double> touches(scene.n_bodies() * contacts.size(), 0.);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int c = 0; c < contacts.size(); ++c)
+              if (std::find(contacts[c].begin(),
+                            contacts[c].end(),
+                            cell->face(f)->boundary_id()) != contacts[c].end())
+                touches[cell->material_id() * contacts.size() + c] = 1.;
+    Utilities::MPI::max(touches, comm, touches);
+    for (unsigned int b = 0; b < unheld.size(); ++b)
+      if (unheld[b] == 1 &&
+          std::accumulate(touches.begin() + b * contacts.size(),
+                          touches.begin() + (b + 1) * contacts.size(),
+                          0.) >= 2.)
+        unheld[b] = 0;
     std::string bodies;
     for (unsigned int b = 0; b < unheld.size(); ++b)
       if (unheld[b] > 0)
@@ -156,8 +183,9 @@ namespace dyncontact
                   "The static problem is singular: nothing holds " + bodies +
                   ": no Dirichlet boundary fixes these rigid motions "
                   "(translations, rotations), and no load acts along them "
-                  "(a single one along which the load acts is left to the "
-                  "contact), so the position is not determined. Clamp part "
+                  "(a single one along which the load acts, or of a body "
+                  "with two contact surfaces, is left to the contact), so "
+                  "the position is not determined. Clamp part "
                   "of the boundary (a Dirichlet boundary of the scene, e.g. "
                   "Scene/Gmsh/Dirichlet tags), give the body a load towards "
                   "the obstacle (e.g. Scene/Hertz/Load > 0), or use a "

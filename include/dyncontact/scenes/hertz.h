@@ -19,6 +19,12 @@ namespace dyncontact
    * 2P/(pi b); in 3D (load P) the radius a = (3PR/(4E*))^{1/3} and p0 = 3P/(2
    * pi a^2); 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
    *
+   * With 'Upper block = true' a third body, a block like the lower one
+   * (body 3, of "Material of body 2"), lies Initial gap above a whole
+   * cylinder or ball; the load acts on its top, the drop velocity moves it
+   * with the cylinder or ball, and the static problem has Hertz's solution
+   * at both contacts (pair 1 below, pair 2 above).
+   *
    * The two registered scenes, "hertz" (2D, subsection Scene/Hertz) and "ball
    * on block" (3D, subsection Scene/Ball on block), are this class with
    * their own subsection.
@@ -43,10 +49,21 @@ namespace dyncontact
     void
     refine_initial_mesh(Triangulation<dim, dim> &triangulation) const override;
 
+    /// 2, or 3 with the upper block.
     unsigned int
     n_bodies() const override
     {
-      return 2;
+      return upper_block ? 3 : 2;
+    }
+
+    /// "Material" for the cylinder or ball, "Material of body 2" for the
+    /// block(s).
+    std::vector<std::string>
+    material_subsections() const override
+    {
+      if (upper_block)
+        return {"Material", "Material of body 2", "Material of body 2"};
+      return {"Material", "Material of body 2"};
     }
 
     std::vector<ContactPair>
@@ -117,6 +134,7 @@ namespace dyncontact
     unsigned int contact_refinements;
     unsigned int extra_refinements;
     bool         matched_block_mesh;
+    bool         upper_block = false;
 
     /// Widths of the block's coarse cells along the top, from the plane of
     /// symmetry to the block's width (m).
