@@ -1,11 +1,13 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/contact/contact_setup.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -115,6 +117,40 @@ namespace dyncontact
     const VectorType w_ghosted = system.ghosted(system.get_boundary_weights());
 
     const auto pairs = contact_pairs(scene);
+    search_radii.clear();
+    for (const ContactPair &pair : pairs)
+      search_radii.push_back(pair.search_radius);
+    side_bodies.clear();
+    if (pairs.size() > 1)
+      {
+        // the bodies of each boundary id, for the banner's pairs
+        const unsigned int  n_bodies = scene.n_bodies();
+        std::vector<double> on_id(256 * n_bodies, 0.);
+        for (const auto &cell :
+             system.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                on_id[cell->face(f)->boundary_id() % 256 * n_bodies +
+                      cell->material_id()] = 1.;
+        Utilities::MPI::max(on_id, comm, on_id);
+        for (const ContactPair &pair : pairs)
+          {
+            std::array<std::string, 2> bodies;
+            for (unsigned int side = 0; side < 2; ++side)
+              for (unsigned int b = 0; b < n_bodies; ++b)
+                {
+                  bool on_side = false;
+                  for (const auto id :
+                       side == 0 ? pair.first_side : pair.second_side)
+                    on_side = on_side || on_id[id % 256 * n_bodies + b] > 0.;
+                  if (on_side)
+                    bodies[side] +=
+                      (bodies[side].empty() ? "" : "+") + std::to_string(b + 1);
+                }
+            side_bodies.push_back(bodies);
+          }
+      }
     if (const auto obstacle = scene.obstacle())
       add_obstacle_rows(*obstacle,
                         pairs.size(),
@@ -131,6 +167,9 @@ namespace dyncontact
                     mapping,
                     w_ghosted,
                     pcout);
+
+    if (pairs.size() + (scene.obstacle() ? 1 : 0) > 1)
+      keep_nearest_rows();
 
     // the penetration check of the slave nodes without a row keeps this
     // rank's master faces, but only if there are such nodes
@@ -154,6 +193,36 @@ namespace dyncontact
     pcout << "   contact rows: " << n_global_row_count
           << ", measure of the slave contact boundary: " << measure
           << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::keep_nearest_rows()
+  {
+    // a slave node with rows in two pairs (or a pair and the obstacle)
+    // keeps the row of the nearer master: two active rows of one node
+    // would eliminate the same component
+    std::map<types::global_dof_index, unsigned int> nearest;
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        const auto [it, inserted] = nearest.emplace(row_scalar_dofs[r], r);
+        if (!inserted && rows.rows[r].gap < rows.rows[it->second].gap)
+          it->second = r;
+      }
+    if (nearest.size() == rows.size())
+      return;
+    ContactRows                          kept;
+    std::vector<types::global_dof_index> kept_dofs;
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      if (nearest[row_scalar_dofs[r]] == r)
+        {
+          kept.rows.push_back(rows.rows[r]);
+          kept_dofs.push_back(row_scalar_dofs[r]);
+        }
+    rows            = std::move(kept);
+    row_scalar_dofs = std::move(kept_dofs);
   }
 
 
@@ -294,6 +363,7 @@ namespace dyncontact
     const AffineConstraints<double> &constraints)
   {
     // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
+    std::string penetration;
     for (const BoundaryNode &node : nodes)
       {
         const Point<dim> &x = node.x;
@@ -312,18 +382,19 @@ namespace dyncontact
                                Utilities::to_string(x[0]) + ", " +
                                Utilities::to_string(x[1]) +
                                ", ...) to the obstacle is not finite."));
-        AssertThrow(parameters.project_initial_penetration ||
-                      row.gap >= -1e-12 * (std::abs(row.gap) + 1.),
-                    ExcMessage("The initial configuration penetrates the "
-                               "obstacle: the node at (" +
-                               Utilities::to_string(x[0]) + ", " +
-                               Utilities::to_string(x[1]) + ", ...) lies " +
-                               Utilities::to_string(-row.gap) +
-                               " m inside it. Correct the scene, or set "
-                               "'Contact/Initial penetration = "
-                               "project'."));
+        if (!parameters.project_initial_penetration &&
+            row.gap < -1e-12 * (std::abs(row.gap) + 1.) && penetration.empty())
+          penetration = "The initial configuration penetrates the "
+                        "obstacle: the node at (" +
+                        Utilities::to_string(x[0]) + ", " +
+                        Utilities::to_string(x[1]) + ", ...) lies " +
+                        Utilities::to_string(-row.gap) +
+                        " m inside it. Correct the scene, or set "
+                        "'Contact/Initial penetration = project'.";
         add_row(row, node.scalar_dof, w_ghosted, constraints);
       }
+    // (every rank stops, also those without such a node)
+    stop_with_any_message(penetration, comm);
   }
 
 
@@ -408,6 +479,7 @@ namespace dyncontact
       pair.search_radius);
     // slave nodes that Dirichlet data fix in every direction of their row
     unsigned int n_clamped = 0;
+    std::string  penetration;
     for (const BoundaryNode &node : nodes)
       {
         const Point<dim> &x     = node.x;
@@ -420,15 +492,19 @@ namespace dyncontact
         auto       projection = *image;
         const bool inside     = (x - image->point) * image->master_normal <
                             -1e-10 * pair.search_radius;
-        AssertThrow(parameters.project_initial_penetration || !inside,
-                    ExcMessage("The initial configuration penetrates: the "
-                               "slave node at (" +
-                               Utilities::to_string(x[0]) + ", " +
-                               Utilities::to_string(x[1]) +
-                               ", ...) lies inside the master body by " +
-                               Utilities::to_string(image->gap) +
-                               " m. Correct the mesh, or set "
-                               "'Contact/Initial penetration = project'."));
+        if (inside && !parameters.project_initial_penetration &&
+            penetration.empty())
+          penetration =
+            "The initial configuration penetrates" +
+            (scene.contact_pairs().size() > 1 ?
+               " (contact pair " + std::to_string(pair_index + 1) + ")" :
+               std::string()) +
+            ": the slave node at (" + Utilities::to_string(x[0]) + ", " +
+            Utilities::to_string(x[1]) +
+            ", ...) lies inside the master body by " +
+            Utilities::to_string(image->gap) +
+            " m. Correct the mesh, or set "
+            "'Contact/Initial penetration = project'.";
         if (inside)
           {
             // a negative gap along the master's normal: the row asks for
@@ -448,14 +524,22 @@ namespace dyncontact
             fixed_by_dirichlet_data(row, system.get_constraints()))
           ++n_clamped;
       }
+    // (every rank stops, also those without such a node)
+    stop_with_any_message(penetration, comm);
     refuse_clamped_slave_nodes(n_clamped, pair_index, slave, comm);
     pcout << "   contact pair"
           << (scene.contact_pairs().size() > 1 ?
                 " " + std::to_string(pair_index + 1) :
                 std::string())
-          << ": slave is side " << slave + 1 << " (" << n_faces[slave]
-          << " faces), master side " << 2 - slave << " (" << n_faces[1 - slave]
-          << " faces)" << std::endl;
+          << ": slave is side " << slave + 1 << " ("
+          << (pair_index < side_bodies.size() ?
+                "body " + side_bodies[pair_index][slave] + ", " :
+                std::string())
+          << n_faces[slave] << " faces), master side " << 2 - slave << " ("
+          << (pair_index < side_bodies.size() ?
+                "body " + side_bodies[pair_index][1 - slave] + ", " :
+                std::string())
+          << n_faces[1 - slave] << " faces)" << std::endl;
     master_surfaces.push_back(sides[1 - slave]);
   }
 
@@ -512,6 +596,7 @@ namespace dyncontact
                 {
                   deepest.depth    = image->gap;
                   deepest.position = node.x;
+                  deepest.pair     = pair;
                 }
             }
       }
@@ -524,14 +609,40 @@ namespace dyncontact
                             my_rank :
                             Utilities::MPI::n_mpi_processes(comm),
                           comm);
-    std::vector<double> position(dim, 0.);
+    std::vector<double> position(dim + 1, 0.);
     for (unsigned int d = 0; d < dim; ++d)
       position[d] = (owner == my_rank) ? deepest.position[d] : 0.;
+    position[dim] = (owner == my_rank) ? deepest.pair : 0.;
     Utilities::MPI::sum(position, comm, position);
     deepest.depth = depth;
     for (unsigned int d = 0; d < dim; ++d)
       deepest.position[d] = position[d];
+    deepest.pair = std::lround(position[dim]);
     return deepest;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::refuse_initial_overlap(const VectorType &u) const
+  {
+    const Penetration deepest = unmatched_penetration(u);
+    if (deepest.depth <= 0.)
+      return;
+    std::ostringstream where;
+    for (unsigned int d = 0; d < dim; ++d)
+      where << (d > 0 ? ", " : "") << deepest.position[d];
+    AssertThrow(deepest.depth <= 1e-10 * search_radii[deepest.pair],
+                ExcMessage("The bodies overlap at t = 0 (contact pair " +
+                           std::to_string(deepest.pair + 1) +
+                           "): the slave node at (" + where.str() + ") lies " +
+                           Utilities::to_string(deepest.depth) +
+                           " m inside the other body, farther than "
+                           "'Contact/Search radius' from the master surface "
+                           "(so it got no row that could reject or project "
+                           "it). Correct the mesh or the initial "
+                           "displacement."));
   }
 
 

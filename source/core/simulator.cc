@@ -106,6 +106,7 @@ namespace dyncontact
     time_step_controller.reset(p.get_contact().get_rows().size());
     p.make_integrator(*timer);
     p.project_initial_penetration();
+    p.get_contact().refuse_initial_overlap(p.u);
     {
       TimerOutput::Scope t(*timer, "time step");
       p.report =

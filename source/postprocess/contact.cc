@@ -198,9 +198,9 @@ namespace dyncontact
     /**
      * The contact of each pair where a scene has more than one (two-body
      * pairs in the order of Scene::contact_pairs(), then the rigid
-     * obstacle): active rows and their measure, contact force and meas
-     * Gamma* (eq. 40) per pair, and each pair's contact intervals in the
-     * summary.
+     * obstacle): its rows, the active ones and their measure, contact force
+     * and meas Gamma* (eq. 40) per pair, and each pair's contact intervals in
+     * the summary.
      */
     template <int dim>
     class ContactPairs : public Interface<dim>
@@ -241,10 +241,25 @@ namespace dyncontact
             const std::string intervals =
               contact_intervals(s, "active_nodes_" + pair);
             const unsigned int r = s.row_of_largest("contact_force_" + pair);
+            const auto         f = s.column("contact_force_" + pair);
+            if (!(f[r] > 0.))
+              {
+                out << "no contact\n";
+                continue;
+              }
+            // bodies that touch at rest have active rows with vanishing
+            // forces before a pulse arrives: the force shows when it does
+            unsigned int first = r, last = r;
+            for (unsigned int i = 0; i < f.size(); ++i)
+              if (f[i] >= 0.5 * f[r])
+                {
+                  first = std::min(first, i);
+                  last  = i;
+                }
             out << intervals.substr(0, intervals.size() - 1)
-                << "; peak contact force "
-                << s.column("contact_force_" + pair)[r] << " " << force
-                << " at t = " << time[r] << " s\n";
+                << "; peak contact force " << f[r] << " " << force
+                << " at t = " << time[r] << " s, at least half of it from "
+                << time[first] << " to " << time[last] << " s\n";
           }
         return out.str();
       }
@@ -260,7 +275,8 @@ namespace dyncontact
       {
         std::vector<std::string> names;
         for (unsigned int k = 1; k <= n_pairs(); ++k)
-          for (const std::string name : {"active_nodes_pair",
+          for (const std::string name : {"rows_pair",
+                                         "active_nodes_pair",
                                          "active_measure_pair",
                                          "contact_force_pair",
                                          "critical_measure_pair"})
@@ -273,18 +289,19 @@ namespace dyncontact
       {
         const ContactRows  &rows   = this->get_contact().get_rows();
         const StepReport   &report = this->get_step_report();
-        std::vector<double> sums(4 * n_pairs(), 0.);
+        std::vector<double> sums(5 * n_pairs(), 0.);
         for (unsigned int p = 0; p < rows.size(); ++p)
           {
-            double *pair = &sums[4 * rows.rows[p].pair];
+            double *pair = &sums[5 * rows.rows[p].pair];
+            pair[0] += 1.;
             if (report.active[p])
               {
-                pair[0] += 1.;
-                pair[1] += rows.rows[p].weight;
-                pair[2] += row_force(report, p);
+                pair[1] += 1.;
+                pair[2] += rows.rows[p].weight;
+                pair[3] += row_force(report, p);
               }
             if (p < report.critical.size() && report.critical[p])
-              pair[3] += rows.rows[p].weight;
+              pair[4] += rows.rows[p].weight;
           }
         Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
         row.insert(row.end(), sums.begin(), sums.end());

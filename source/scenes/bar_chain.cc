@@ -123,11 +123,9 @@ namespace dyncontact
     check_in_range(
       impact_velocity, 0., 1e9, "Scene/Bar chain/Impact velocity", "m/s");
     check_in_range(initial_gap, 0., 1e9, "Scene/Bar chain/Initial gap", "m");
-    AssertThrow(length / cells_along <= 1e3 * height &&
-                  height / cells_across <= 1e3 * length / cells_along,
-                ExcMessage("Scene/Bar chain: the cells would be degenerate "
-                           "(sides in a ratio beyond 1000): adjust Length, "
-                           "Height and the cell counts."));
+    check_cell_sides(length / cells_along,
+                     height / cells_across,
+                     "Scene/Bar chain");
   }
 
 

@@ -88,26 +88,38 @@ namespace dyncontact
       return text;
     }
 
+    /// The cell tags of each body, as the prm gives them, for messages.
+    std::string
+    bodies_text(const std::vector<std::set<unsigned int>> &body_tags)
+    {
+      if (body_tags.size() <= 2)
+        return "Scene/Gmsh/Body 1 tags = " + to_list(body_tags[0]) +
+               ", Scene/Gmsh/Body 2 tags = " +
+               (body_tags.size() > 1 ? to_list(body_tags[1]) : "");
+      std::string text = "Scene/Gmsh/Bodies = ";
+      for (unsigned int b = 0; b < body_tags.size(); ++b)
+        text += (b > 0 ? "; " : "") + to_list(body_tags[b]);
+      return text;
+    }
+
     /**
-     * The body (0 or 1) whose tags in @p body_tags contain the physical
-     * tag @p tag of a cell; throws if neither does.
+     * The body whose tags in @p body_tags contain the physical tag @p tag
+     * of a cell; throws if none does.
      */
     unsigned int
-    body_of_cell_tag(const unsigned int                           tag,
-                     const std::array<std::set<unsigned int>, 2> &body_tags,
-                     const std::string                           &mesh_file)
+    body_of_cell_tag(const unsigned int                         tag,
+                     const std::vector<std::set<unsigned int>> &body_tags,
+                     const std::string                         &mesh_file)
     {
       int body = -1;
-      for (unsigned int b = 0; b < 2; ++b)
+      for (unsigned int b = 0; b < body_tags.size(); ++b)
         if (body_tags[b].count(tag))
           body = b;
       AssertThrow(body >= 0,
-                  ExcMessage(
-                    "Mesh file '" + mesh_file + "': cells with physical tag " +
-                    std::to_string(tag) +
-                    " belong to no body (Scene/Gmsh/Body 1 tags = " +
-                    to_list(body_tags[0]) + ", Scene/Gmsh/Body 2 tags = " +
-                    to_list(body_tags[1]) + ")."));
+                  ExcMessage("Mesh file '" + mesh_file +
+                             "': cells with physical tag " +
+                             std::to_string(tag) + " belong to no body (" +
+                             bodies_text(body_tags) + ")."));
       return body;
     }
 
@@ -118,9 +130,9 @@ namespace dyncontact
      */
     template <int dim>
     void
-    set_bodies(Triangulation<dim, dim>                     &tria,
-               const std::array<std::set<unsigned int>, 2> &body_tags,
-               const std::string                           &mesh_file)
+    set_bodies(Triangulation<dim, dim>                   &tria,
+               const std::vector<std::set<unsigned int>> &body_tags,
+               const std::string                         &mesh_file)
     {
       std::set<unsigned int>               cell_tags;
       std::map<unsigned int, unsigned int> vertex_body;
@@ -135,22 +147,26 @@ namespace dyncontact
               const auto [it, inserted] =
                 vertex_body.emplace(cell->vertex_index(v), body);
               AssertThrow(inserted || it->second == body,
-                          ExcMessage("Mesh file '" + mesh_file +
-                                     "': the two bodies share the vertex " +
-                                     Utilities::to_string(cell->vertex(v)[0]) +
-                                     ", " +
-                                     Utilities::to_string(cell->vertex(v)[1]) +
-                                     "; bodies in contact must be meshed "
-                                     "separately."));
+                          ExcMessage(
+                            "Mesh file '" + mesh_file + "': bodies " +
+                            std::to_string(it->second + 1) + " and " +
+                            std::to_string(body + 1) + " share the vertex " +
+                            Utilities::to_string(cell->vertex(v)[0]) + ", " +
+                            Utilities::to_string(cell->vertex(v)[1]) +
+                            "; bodies in contact must be meshed "
+                            "separately."));
             }
         }
-      for (unsigned int b = 0; b < 2; ++b)
+      for (unsigned int b = 0; b < body_tags.size(); ++b)
         for (const auto tag : body_tags[b])
-          AssertThrow(cell_tags.count(tag),
-                      ExcMessage("Scene/Gmsh/Body " + std::to_string(b + 1) +
-                                 " tags: the mesh file '" + mesh_file +
-                                 "' has no cells with physical tag " +
-                                 std::to_string(tag) + "."));
+          AssertThrow(
+            cell_tags.count(tag),
+            ExcMessage(
+              (body_tags.size() <= 2 ?
+                 "Scene/Gmsh/Body " + std::to_string(b + 1) + " tags" :
+                 "Scene/Gmsh/Bodies (body " + std::to_string(b + 1) + ")") +
+              ": the mesh file '" + mesh_file +
+              "' has no cells with physical tag " + std::to_string(tag) + "."));
     }
 
     /**
@@ -161,9 +177,10 @@ namespace dyncontact
     template <int dim>
     std::set<unsigned int>
     boundary_tags(
-      const Triangulation<dim, dim>                        &tria,
-      const std::array<std::vector<types::boundary_id>, 2> &contact_tags,
-      const std::string                                    &mesh_file)
+      const Triangulation<dim, dim>                      &tria,
+      const std::vector<std::vector<types::boundary_id>> &contact_tags,
+      const std::vector<std::string>                     &entries,
+      const std::string                                  &mesh_file)
     {
       std::set<unsigned int> face_tags;
       for (const auto &cell : tria.active_cell_iterators())
@@ -172,14 +189,13 @@ namespace dyncontact
             {
               const unsigned int tag = cell->face(f)->boundary_id();
               face_tags.insert(tag);
-              for (unsigned int b = 0; b < 2; ++b)
+              for (unsigned int b = 0; b < contact_tags.size(); ++b)
                 AssertThrow(std::find(contact_tags[b].begin(),
                                       contact_tags[b].end(),
                                       tag) == contact_tags[b].end() ||
                               cell->material_id() == b,
                             ExcMessage(
-                              "Scene/Gmsh/Contact tags of body " +
-                              std::to_string(b + 1) +
+                              "Scene/Gmsh/" + entries[b] +
                               ": the boundary faces "
                               "with physical tag " +
                               std::to_string(tag) + " in the mesh file '" +
@@ -270,6 +286,39 @@ namespace dyncontact
                       Patterns::Anything(),
                       "Initial velocity of body 2, components in m/s, each in "
                       "[-1e9, 1e9] (in 2D a third component must be 0).");
+    prm.declare_entry("Bodies",
+                      "",
+                      Patterns::Anything(),
+                      "Any number of bodies: the physical tags of the cells "
+                      "of each body, comma-separated, the bodies separated "
+                      "by ';' (e.g. '1; 2; 3, 4': three bodies, the third of "
+                      "tags 3 and 4), instead of Body 1 tags and Body 2 "
+                      "tags. Body 1 is of subsection Material, every other "
+                      "of Material of body 2. Empty: Body 1 tags and Body 2 "
+                      "tags.");
+    prm.declare_entry("Contact tags",
+                      "",
+                      Patterns::Anything(),
+                      "With Bodies: the physical tags of each body's "
+                      "possible contact boundary, in the order of Bodies, "
+                      "separated by ';' (an empty item: none).");
+    prm.declare_entry("Initial velocities",
+                      "",
+                      Patterns::Anything(),
+                      "With Bodies: the initial velocity of each body, in "
+                      "the order of Bodies, separated by ';', components in "
+                      "m/s comma-separated, each in [-1e9, 1e9]; empty: all "
+                      "at rest.");
+    prm.declare_entry("Contact pairs",
+                      "",
+                      Patterns::Anything(),
+                      "With Bodies: the contact pairs as 'slave : master' "
+                      "body numbers, comma-separated (e.g. '2 : 1, 3 : 2'); "
+                      "a pair's surfaces are the Contact tags of its bodies, "
+                      "its slave's nodes carry the rows (unless "
+                      "Contact/Slave side says 1 or 2), and a slave node "
+                      "that finds a master surface in two pairs keeps the "
+                      "row of the nearer.");
     prm.declare_entry("Gravity",
                       "0, 0, 0",
                       Patterns::Anything(),
@@ -289,25 +338,203 @@ namespace dyncontact
     prm.enter_subsection("Scene");
     prm.enter_subsection("Gmsh");
     mesh_file      = prm.get("Mesh file");
-    body_tags[0]   = parse_tags(prm.get("Body 1 tags"), "Body 1 tags");
-    body_tags[1]   = parse_tags(prm.get("Body 2 tags"), "Body 2 tags");
     dirichlet_tags = parse_tags(prm.get("Dirichlet tags"), "Dirichlet tags");
     neumann_tags   = parse_tags(prm.get("Neumann tags"), "Neumann tags");
     traction       = parse_vector<dim>(prm.get("Neumann traction"),
                                  "Neumann traction",
                                  1e15,
                                  "Pa");
-    for (unsigned int b = 0; b < 2; ++b)
-      {
-        const std::string entry =
-          "Contact tags of body " + std::to_string(b + 1);
-        for (const auto tag : parse_tags(prm.get(entry), entry))
-          contact_tags[b].push_back(tag);
-        const std::string v =
-          "Initial velocity of body " + std::to_string(b + 1);
-        velocity[b] = parse_vector<dim>(prm.get(v), v, 1e9, "m/s");
-      }
     gravity = parse_vector<dim>(prm.get("Gravity"), "Gravity", 1e15, "m/s^2");
+    const std::string bodies = prm.get("Bodies");
+    body_tags.clear();
+    contact_tags.clear();
+    contact_entries.clear();
+    velocity.clear();
+    pairs.clear();
+    pairs_listed = !bodies.empty();
+    if (bodies.empty())
+      {
+        // one or two bodies, one pair
+        for (const std::string entry :
+             {"Contact tags", "Initial velocities", "Contact pairs"})
+          AssertThrow(prm.get(entry).empty(),
+                      ExcMessage("Scene/Gmsh/" + entry +
+                                 " needs Scene/Gmsh/Bodies (the bodies as a "
+                                 "list); with Body 1 tags and Body 2 tags use "
+                                 "Contact tags of body 1 and 2 and Initial "
+                                 "velocity of body 1 and 2."));
+        body_tags.push_back(parse_tags(prm.get("Body 1 tags"), "Body 1 tags"));
+        const auto second = parse_tags(prm.get("Body 2 tags"), "Body 2 tags");
+        if (!second.empty())
+          body_tags.push_back(second);
+        for (unsigned int b = 0; b < 2; ++b)
+          {
+            const std::string entry =
+              "Contact tags of body " + std::to_string(b + 1);
+            contact_tags.emplace_back();
+            for (const auto tag : parse_tags(prm.get(entry), entry))
+              contact_tags[b].push_back(tag);
+            contact_entries.push_back(entry);
+            const std::string v =
+              "Initial velocity of body " + std::to_string(b + 1);
+            velocity.push_back(parse_vector<dim>(prm.get(v), v, 1e9, "m/s"));
+          }
+        AssertThrow(!body_tags[0].empty(),
+                    ExcMessage(
+                      "Scene/Gmsh/Body 1 tags must name at least one tag."));
+        for (const auto tag : body_tags[0])
+          AssertThrow(second.count(tag) == 0,
+                      ExcMessage("Scene/Gmsh: tag " + std::to_string(tag) +
+                                 " is in both Body 1 tags and Body 2 tags."));
+        AssertThrow(contact_tags[0].empty() == contact_tags[1].empty() &&
+                      (contact_tags[0].empty() || body_tags.size() == 2),
+                    ExcMessage("Scene/Gmsh: contact needs two bodies, and "
+                               "contact tags on both (Contact tags of body 1 "
+                               "and 2)."));
+        if (!contact_tags[0].empty())
+          pairs.emplace_back(0, 1);
+      }
+    else
+      {
+        // any number of bodies and a list of pairs
+        for (const auto &[entry, default_value] :
+             std::vector<std::pair<std::string, std::string>>{
+               {"Body 1 tags", "1"},
+               {"Body 2 tags", ""},
+               {"Contact tags of body 1", ""},
+               {"Contact tags of body 2", ""},
+               {"Initial velocity of body 1", "0, 0, 0"},
+               {"Initial velocity of body 2", "0, 0, 0"}})
+          AssertThrow(prm.get(entry) == default_value,
+                      ExcMessage("Scene/Gmsh/Bodies replaces Body 1 tags, "
+                                 "Body 2 tags and their entries; Scene/Gmsh/" +
+                                 entry +
+                                 " must be left out (use Contact tags and "
+                                 "Initial velocities)."));
+        for (const std::string &item :
+             Utilities::split_string_list(bodies, ';'))
+          {
+            const auto tags = parse_tags(item, "Bodies");
+            AssertThrow(!tags.empty(),
+                        ExcMessage("Scene/Gmsh/Bodies = '" + bodies +
+                                   "': body " +
+                                   std::to_string(body_tags.size() + 1) +
+                                   " has no tags."));
+            for (const auto tag : tags)
+              for (unsigned int b = 0; b < body_tags.size(); ++b)
+                AssertThrow(body_tags[b].count(tag) == 0,
+                            ExcMessage("Scene/Gmsh/Bodies: tag " +
+                                       std::to_string(tag) + " is in body " +
+                                       std::to_string(b + 1) + " and in body " +
+                                       std::to_string(body_tags.size() + 1) +
+                                       "."));
+            body_tags.push_back(tags);
+          }
+        const unsigned int n = body_tags.size();
+        AssertThrow(n <= 50,
+                    ExcMessage("Scene/Gmsh/Bodies names " + std::to_string(n) +
+                               " bodies; at most 50 are supported."));
+        const auto per_body = [&](const std::string &entry) {
+          const std::string text = prm.get(entry);
+          if (text.empty())
+            return std::vector<std::string>(n);
+          std::vector<std::string> items;
+          // (split_string_list drops a last empty item)
+          std::string item;
+          for (std::istringstream in(text); std::getline(in, item, ';');)
+            items.push_back(Utilities::trim(item));
+          if (!text.empty() && text.back() == ';')
+            items.emplace_back();
+          AssertThrow(items.size() == n,
+                      ExcMessage("Scene/Gmsh/" + entry + " = '" + text +
+                                 "' has " + std::to_string(items.size()) +
+                                 " items separated by ';'; Scene/Gmsh/Bodies "
+                                 "has " +
+                                 std::to_string(n) + " bodies."));
+          return items;
+        };
+        const auto contact_items  = per_body("Contact tags");
+        const auto velocity_items = per_body("Initial velocities");
+        for (unsigned int b = 0; b < n; ++b)
+          {
+            const std::string entry =
+              "Contact tags (body " + std::to_string(b + 1) + ")";
+            contact_tags.emplace_back();
+            for (const auto tag : parse_tags(contact_items[b], entry))
+              contact_tags[b].push_back(tag);
+            contact_entries.push_back(entry);
+            velocity.push_back(velocity_items[b].empty() ?
+                                 Tensor<1, dim>() :
+                                 parse_vector<dim>(velocity_items[b],
+                                                   "Initial velocities (body " +
+                                                     std::to_string(b + 1) +
+                                                     ")",
+                                                   1e9,
+                                                   "m/s"));
+          }
+        const std::string list = prm.get("Contact pairs");
+        for (const std::string &item : Utilities::split_string_list(list, ','))
+          {
+            const auto          sides = Utilities::split_string_list(item, ':');
+            std::array<long, 2> body{{0, 0}};
+            bool                valid = sides.size() == 2;
+            for (unsigned int k = 0; valid && k < 2; ++k)
+              {
+                char *end = nullptr;
+                body[k]   = std::strtol(sides[k].c_str(), &end, 10);
+                valid     = !sides[k].empty() && *end == '\0';
+              }
+            AssertThrow(valid,
+                        ExcMessage("Scene/Gmsh/Contact pairs: '" + item +
+                                   "' is no pair 'slave : master' of body "
+                                   "numbers."));
+            for (unsigned int k = 0; k < 2; ++k)
+              AssertThrow(body[k] >= 1 && body[k] <= long(n),
+                          ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                     item + "' names body " + sides[k] +
+                                     ", but Scene/Gmsh/Bodies has bodies 1 "
+                                     "to " +
+                                     std::to_string(n) + "."));
+            AssertThrow(body[0] != body[1],
+                        ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                   item + "' pairs body " +
+                                   std::to_string(body[0]) + " with itself."));
+            const std::pair<unsigned int, unsigned int> pair(body[0] - 1,
+                                                             body[1] - 1);
+            for (const auto &[slave, master] : pairs)
+              AssertThrow(std::minmax(slave, master) !=
+                            std::minmax(pair.first, pair.second),
+                          ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                     item +
+                                     "' is listed twice (a pair of two "
+                                     "bodies is listed once, either way)."));
+            for (const unsigned int b : {pair.first, pair.second})
+              AssertThrow(!contact_tags[b].empty(),
+                          ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                     item + "' names body " +
+                                     std::to_string(b + 1) +
+                                     ", which has no Scene/Gmsh/Contact "
+                                     "tags."));
+            pairs.push_back(pair);
+          }
+        // contact tags that no pair uses: bodies that would pass through
+        // each other unnoticed
+        for (unsigned int b = 0; b < n; ++b)
+          if (!contact_tags[b].empty())
+            {
+              bool paired = false;
+              for (const auto &[slave, master] : pairs)
+                paired = paired || slave == b || master == b;
+              AssertThrow(paired,
+                          ExcMessage(
+                            "Scene/Gmsh/Contact tags give body " +
+                            std::to_string(b + 1) +
+                            " a contact boundary, but no pair of "
+                            "Scene/Gmsh/Contact pairs names it: list its "
+                            "pairs (slave : master), or leave its contact "
+                            "tags out."));
+            }
+      }
     prm.leave_subsection();
     prm.leave_subsection();
 
@@ -319,18 +546,6 @@ namespace dyncontact
         (std::filesystem::path(this->input_directory) / mesh_file).string();
     n_cells       = check_msh_file(mesh_file, dim);
     mesh_checksum = checksum_of_file(mesh_file);
-    AssertThrow(!body_tags[0].empty(),
-                ExcMessage(
-                  "Scene/Gmsh/Body 1 tags must name at least one tag."));
-    for (const auto tag : body_tags[0])
-      AssertThrow(body_tags[1].count(tag) == 0,
-                  ExcMessage("Scene/Gmsh: tag " + std::to_string(tag) +
-                             " is in both Body 1 tags and Body 2 tags."));
-    AssertThrow(contact_tags[0].empty() == contact_tags[1].empty() &&
-                  (contact_tags[0].empty() || !body_tags[1].empty()),
-                ExcMessage("Scene/Gmsh: contact needs two bodies, and "
-                           "contact tags on both (Contact tags of body 1 and "
-                           "2)."));
   }
 
 
@@ -345,20 +560,18 @@ namespace dyncontact
     grid_in.read_msh(in);
 
     set_bodies(tria, body_tags, mesh_file);
-    const auto face_tags = boundary_tags(tria, contact_tags, mesh_file);
+    const auto face_tags =
+      boundary_tags(tria, contact_tags, contact_entries, mesh_file);
     require_boundary_tags(face_tags,
                           "Dirichlet tags",
                           dirichlet_tags,
                           mesh_file);
     require_boundary_tags(face_tags, "Neumann tags", neumann_tags, mesh_file);
-    require_boundary_tags(face_tags,
-                          "Contact tags of body 1",
-                          contact_tags[0],
-                          mesh_file);
-    require_boundary_tags(face_tags,
-                          "Contact tags of body 2",
-                          contact_tags[1],
-                          mesh_file);
+    for (unsigned int b = 0; b < contact_tags.size(); ++b)
+      require_boundary_tags(face_tags,
+                            contact_entries[b],
+                            contact_tags[b],
+                            mesh_file);
   }
 
 
@@ -367,13 +580,19 @@ namespace dyncontact
   std::vector<ContactPair>
   GmshScene<dim>::contact_pairs() const
   {
-    if (contact_tags[0].empty())
-      return {};
-    ContactPair pair;
-    pair.first_side  = contact_tags[0];
-    pair.second_side = contact_tags[1];
-
-    return {pair};
+    std::vector<ContactPair> result;
+    for (const auto &[slave, master] : pairs)
+      {
+        ContactPair pair;
+        pair.first_side  = contact_tags[slave];
+        pair.second_side = contact_tags[master];
+        // Body 1 tags and Body 2 tags: Contact/Slave side decides (auto:
+        // the finer side); a list of pairs names the slave
+        if (pairs_listed)
+          pair.slave_side = 0;
+        result.push_back(pair);
+      }
+    return result;
   }
 
 
@@ -423,5 +642,6 @@ namespace dyncontact
 
   DYNCONTACT_REGISTER_SCENE(GmshScene,
                             "gmsh",
-                            "any one- or two-body mesh from a .msh file")
+                            "any mesh of one or more bodies from a .msh "
+                            "file")
 } // namespace dyncontact

@@ -19,9 +19,10 @@ namespace dyncontact
   std::vector<std::string>
   Scene<dim>::material_subsections() const
   {
-    if (n_bodies() == 1)
-      return {"Material"};
-    return {"Material", "Material of body 2"};
+    // body 1 "Material", every other "Material of body 2"
+    std::vector<std::string> subsections(n_bodies(), "Material of body 2");
+    subsections[0] = "Material";
+    return subsections;
   }
 
 

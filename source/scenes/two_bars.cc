@@ -93,13 +93,9 @@ namespace dyncontact
       impact_velocity, 0., 1e9, "Scene/Two bars/Impact velocity", "m/s");
     check_in_range(initial_gap, 0., 1e9, "Scene/Two bars/Initial gap", "m");
     for (unsigned int b = 0; b < 2; ++b)
-      AssertThrow(length / cells_along[b] <= 1e3 * height &&
-                    height / cells_across[b] <= 1e3 * length / cells_along[b],
-                  ExcMessage("Scene/Two bars: the cells of bar " +
-                             std::to_string(b + 1) +
-                             " would be degenerate (sides in a ratio beyond "
-                             "1000): adjust Length, Height and the cell "
-                             "counts."));
+      check_cell_sides(length / cells_along[b],
+                       height / cells_across[b],
+                       "Scene/Two bars (bar " + std::to_string(b + 1) + ")");
   }
 
 

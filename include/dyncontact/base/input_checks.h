@@ -44,6 +44,22 @@ namespace dyncontact
   }
 
   /**
+   * Stops with a message naming @p where unless the sides @p a and @p b
+   * (m) of a block's cells lie within a ratio of 1000 of each other
+   * (thinner cells make the matrices too ill-conditioned to solve).
+   */
+  inline void
+  check_cell_sides(const double a, const double b, const std::string &where)
+  {
+    AssertThrow(a <= 1e3 * b && b <= 1e3 * a,
+                dealii::ExcMessage(
+                  where + ": the cells would be degenerate (sides " +
+                  format_number(a) + " and " + format_number(b) +
+                  " m, a ratio beyond 1000): adjust Length, Height and the "
+                  "cell counts."));
+  }
+
+  /**
    * The number stored under @p key in a checkpoint's @p state (its
    * state.txt), if it is a finite number in [@p min, @p max]; otherwise
    * stops with a message naming @p what (e.g. "time t (s)"), the key and the

@@ -11,6 +11,7 @@
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -103,8 +104,9 @@ namespace dyncontact
     /// The deepest penetration of a slave node without a constraint row.
     struct Penetration
     {
-      double     depth = 0.; ///< in m; 0 if none penetrates
-      Point<dim> position;   ///< reference position of that slave node
+      double       depth = 0.; ///< in m; 0 if none penetrates
+      Point<dim>   position;   ///< reference position of that slave node
+      unsigned int pair = 0;   ///< its contact pair
     };
 
     /**
@@ -178,6 +180,20 @@ namespace dyncontact
                       const VectorType                &w_ghosted,
                       const AffineConstraints<double> &constraints);
 
+    /// Stops with a message naming the pair if a slave node without a row
+    /// lies inside the other body in the initial state @p u (the bodies
+    /// overlap at t = 0; a node with a row is refused or projected by
+    /// setup() and project_initial_penetration()). Collective.
+  public:
+    void
+    refuse_initial_overlap(const VectorType &u) const;
+
+  private:
+    /// Of the rows of one slave node in several pairs, keeps the one with
+    /// the least gap (the nearer master).
+    void
+    keep_nearest_rows();
+
     /// The side (0 or 1) of a pair whose faces near the other side are
     /// finer on average: the slave of "Slave side = auto".
     unsigned int
@@ -221,10 +237,14 @@ namespace dyncontact
     /// all ranks.
     std::vector<std::vector<MasterFace<dim>>> master_surfaces;
     std::vector<types::global_dof_index>      n_unmatched_in_pair;
-    IndexSet                                  locally_owned;
-    IndexSet                                  locally_relevant;
-    std::vector<types::global_dof_index>      row_scalar_dofs;
-    ContactRowOperator                        row_operator;
+    /// Per pair: its search radius (m), and (scenes of several pairs) the
+    /// bodies of its two sides, for the banner.
+    std::vector<double>                     search_radii;
+    std::vector<std::array<std::string, 2>> side_bodies;
+    IndexSet                                locally_owned;
+    IndexSet                                locally_relevant;
+    std::vector<types::global_dof_index>    row_scalar_dofs;
+    ContactRowOperator                      row_operator;
     /// Per pair: the slave side (0, 1) of the last set-up, and those kept by
     /// keep_slave_sides() (empty: chosen anew at each set-up).
     std::vector<unsigned int> slave_sides;

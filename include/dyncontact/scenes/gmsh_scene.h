@@ -4,14 +4,20 @@
 #include <dyncontact/scenes/interface.h>
 
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace dyncontact
 {
   /**
-   * Any one- or two-body mesh from Gmsh (a .msh file, quadrilaterals or
-   * hexahedra). Physical tags are mapped in the prm: cell tags to bodies,
+   * Any mesh of one or more bodies from Gmsh (a .msh file, quadrilaterals
+   * or hexahedra). Physical tags are mapped in the prm: cell tags to bodies,
    * boundary tags to clamped (Dirichlet), loaded (Neumann) and contact
-   * boundaries. The two bodies must not share vertices. The mesh is checked
+   * boundaries. Bodies must not share vertices. Two bodies can be given by
+   * 'Body 1 tags' and 'Body 2 tags' (one contact pair); any number by
+   * 'Bodies', with 'Contact tags', 'Initial velocities' and a list of
+   * 'Contact pairs' (slave : master, body numbers). The mesh is checked
    * against the prm: every cell must belong to a body, every tag named in
    * the prm must exist in the mesh, otherwise the run stops with a message.
    */
@@ -43,7 +49,7 @@ namespace dyncontact
     unsigned int
     n_bodies() const override
     {
-      return body_tags[1].empty() ? 1 : 2;
+      return body_tags.size();
     }
 
     std::vector<ContactPair>
@@ -63,16 +69,23 @@ namespace dyncontact
                      const unsigned int body) const override;
 
   private:
-    std::string                                    mesh_file;
-    double                                         n_cells = 0.;
-    std::string                                    mesh_checksum;
-    std::array<std::set<unsigned int>, 2>          body_tags;
-    std::set<unsigned int>                         dirichlet_tags;
-    std::set<unsigned int>                         neumann_tags;
-    Tensor<1, dim>                                 traction;
-    std::array<std::vector<types::boundary_id>, 2> contact_tags;
-    std::array<Tensor<1, dim>, 2>                  velocity;
-    Tensor<1, dim>                                 gravity;
+    std::string mesh_file;
+    double      n_cells = 0.;
+    std::string mesh_checksum;
+    /// Per body: its cell tags, its contact tags, its initial velocity.
+    std::vector<std::set<unsigned int>>          body_tags;
+    std::vector<std::vector<types::boundary_id>> contact_tags;
+    std::vector<Tensor<1, dim>>                  velocity;
+    /// The entry that gave each body's contact tags, for messages.
+    std::vector<std::string> contact_entries;
+    /// (slave, master) bodies, counted from 0; whether listed in Contact
+    /// pairs (they then name the slave).
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    bool                                               pairs_listed = false;
+    std::set<unsigned int>                             dirichlet_tags;
+    std::set<unsigned int>                             neumann_tags;
+    Tensor<1, dim>                                     traction;
+    Tensor<1, dim>                                     gravity;
   };
 } // namespace dyncontact
 

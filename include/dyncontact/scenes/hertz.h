@@ -89,7 +89,8 @@ namespace dyncontact
     /// The contact half-width (2D) or radius (3D) at the largest
     /// indentation of the drop, in m, from the energy balance of Hertz's
     /// quasi-static impact: the kinetic energy of the whole half cylinder
-    /// or half ball at the Drop velocity and the load's work over the
+    /// or half ball (with the upper block: the whole cylinder or ball and
+    /// the upper block) at the Drop velocity and the load's work over the
     /// indentation are stored in Hertz's contact (the load's work over the
     /// initial gap is left out, so that a static run sizes nothing from
     /// it); 0 without a Drop velocity. 3D: the work of

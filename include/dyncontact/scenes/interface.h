@@ -150,8 +150,8 @@ namespace dyncontact
       return 1;
     }
 
-    /// The material subsection of each body: by default "Material" and
-    /// "Material of body 2".
+    /// The material subsection of each body: by default "Material" for
+    /// body 1 and "Material of body 2" for every other.
     virtual std::vector<std::string>
     material_subsections() const;
 

@@ -1,0 +1,223 @@
+// Any number of bodies from a Gmsh mesh ('Scene/Gmsh/Bodies' and a list of
+// 'Contact pairs'): a .msh file written here holds three separately meshed
+// blocks in 2D, a clamped base (tag 1) and two blocks above it (tags 2, 3),
+// each 0.05 m above the one below, dropping at 0.5 m/s. Pairs '2 : 1,
+// 3 : 2': the middle block reaches the base at g/v = 0.1 s (within 2 tau),
+// the upper block reaches the middle one later; E + W never increases and
+// nothing penetrates. With the middle block the slave of both pairs (its
+// contact tags its bottom and its top, pairs '2 : 1, 2 : 3') and a search
+// radius of 0.5 m, its nodes find both masters, and each keeps the row of
+// the nearer: 22 rows for its 22 slave nodes (40 if each kept every row),
+// and the run is that of a search radius of 0.2 m, which finds only the
+// nearer one (to 1e-9 of each column's largest value: the rows come in
+// another order). Bad input is refused with a message naming the pair or
+// the entry: an unknown body, a body paired with itself, a pair listed
+// twice (either way round), a body without contact tags, an item that is
+// no pair, item counts that differ from the number of bodies, contact tags
+// of a body that no pair names, Bodies beside Body 2 tags or Initial
+// velocity of body 2, and bodies that overlap at t = 0. On two MPI ranks
+// (gmsh_bodies.mpirun=2) with the same output.
+
+#include <dyncontact/base/collective_errors.h>
+
+#include <filesystem>
+
+#include "tests.h"
+
+namespace
+{
+  /// An axis-parallel block of nx x ny quadrilaterals with a physical cell
+  /// tag and physical tags of its bottom and top edges (0: none).
+  struct Block
+  {
+    double       x0, x1, y0, y1;
+    unsigned int nx, ny, cell_tag, bottom_tag, top_tag;
+  };
+
+  /// Writes @p blocks as a Gmsh 2.2 ASCII mesh, no vertex shared.
+  void
+  write_msh(const std::string &file, const std::vector<Block> &blocks)
+  {
+    std::ostringstream nodes, elements;
+    unsigned int       n_nodes = 0, n_elements = 0;
+    nodes << std::setprecision(17);
+    for (const Block &b : blocks)
+      {
+        const unsigned int first = n_nodes + 1;
+        for (unsigned int j = 0; j <= b.ny; ++j)
+          for (unsigned int i = 0; i <= b.nx; ++i)
+            nodes << ++n_nodes << " " << b.x0 + (b.x1 - b.x0) * i / b.nx << " "
+                  << b.y0 + (b.y1 - b.y0) * j / b.ny << " 0\n";
+        const auto node = [&](const unsigned int i, const unsigned int j) {
+          return first + j * (b.nx + 1) + i;
+        };
+        for (unsigned int j = 0; j < b.ny; ++j)
+          for (unsigned int i = 0; i < b.nx; ++i)
+            elements << ++n_elements << " 3 2 " << b.cell_tag << " "
+                     << b.cell_tag << " " << node(i, j) << " " << node(i + 1, j)
+                     << " " << node(i + 1, j + 1) << " " << node(i, j + 1)
+                     << "\n";
+        for (unsigned int i = 0; i < b.nx; ++i)
+          {
+            if (b.bottom_tag > 0)
+              elements << ++n_elements << " 1 2 " << b.bottom_tag << " "
+                       << b.bottom_tag << " " << node(i, 0) << " "
+                       << node(i + 1, 0) << "\n";
+            if (b.top_tag > 0)
+              elements << ++n_elements << " 1 2 " << b.top_tag << " "
+                       << b.top_tag << " " << node(i, b.ny) << " "
+                       << node(i + 1, b.ny) << "\n";
+          }
+      }
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+                          << n_nodes << "\n"
+                          << nodes.str() << "$EndNodes\n$Elements\n"
+                          << n_elements << "\n"
+                          << elements.str() << "$EndElements\n";
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+
+  /// The run's input: the three blocks with @p entries in Scene/Gmsh and
+  /// the search radius @p radius.
+  std::string
+  prm(const std::string &name,
+      const std::string &entries,
+      const double       radius = 0.2)
+  {
+    return "set Dimension = 2\nset Output directory = results-" + name + "\n" +
+           testing::scene_prm(
+             "gmsh",
+             "    set Mesh file = " + std::filesystem::current_path().string() +
+               "/three_blocks.msh\n"
+               "    set Bodies = 1; 2; 3\n"
+               "    set Dirichlet tags = 10\n"
+               "    set Initial velocities = 0, 0; 0, -0.5; 0, -0.5\n" +
+               entries) +
+           "subsection Contact\n  set Search radius = " + testing::fmt(radius) +
+           "\nend\n"
+           "subsection Material\n  set Young's modulus = 100\n"
+           "  set Poisson's ratio = 0.3\nend\n"
+           "subsection Material of body 2\n  set Young's modulus = 100\n"
+           "  set Poisson's ratio = 0.3\nend\n"
+           "subsection Time integration\n  set Scheme = N-CS++\n"
+           "  set Time step = 0.005\n  set End time = 0.3\nend\n"
+           "subsection Output\n  set Write vtu = false\nend\n";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using namespace testing;
+
+  // base [0, 2] x [-0.5, 0] (bottom 10, top 11), middle [0.5, 1.5] x
+  // [0.05, 0.35] (bottom 12, top 13), upper [0.6, 1.4] x [0.4, 0.6]
+  // (bottom 14)
+  write_msh("three_blocks.msh",
+            {Block{0., 2., -0.5, 0., 16, 4, 1, 10, 11},
+             Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
+             Block{0.6, 1.4, 0.4, 0.6, 9, 2, 3, 14, 0}});
+
+  const Statistics s        = run(prm("chain",
+                               "    set Contact tags = 11; 12, 13; 14\n"
+                                      "    set Contact pairs = 2 : 1, 3 : 2\n"));
+  const auto       time     = s.column("time");
+  double           first[2] = {-1., -1.};
+  for (unsigned int k = 0; k < 2; ++k)
+    {
+      const auto active = s.column("active_nodes_pair" + std::to_string(k + 1));
+      for (unsigned int i = 0; i < time.size() && first[k] < 0.; ++i)
+        if (active[i] > 0)
+          first[k] = time[i];
+    }
+  log() << "three bodies, pairs 2 : 1, 3 : 2: the middle block reaches the "
+           "base at "
+        << fmt(first[0], 2)
+        << " s (g/v = 0.1): " << check(std::abs(first[0] - 0.1) <= 0.01)
+        << ", the upper block reaches the middle one later, at "
+        << fmt(first[1], 2) << " s: " << check(first[1] > first[0]) << "\n";
+  log() << "  E + W non-increasing: "
+        << check(max_energy_increase(s) <= 1e-10 * s.column("energy_total")[0])
+        << "; no penetration: "
+        << check(max_of(s.column("max_penetration")) < 1e-12) << "\n";
+
+  // the middle block as the slave of both pairs
+  const std::string both       = "    set Contact tags = 11; 12, 13; 14\n"
+                                 "    set Contact pairs = 2 : 1, 2 : 3\n";
+  const Statistics  near       = run(prm("near", both, 0.2));
+  const Statistics  far        = run(prm("far", both, 0.5));
+  double            difference = 0.;
+  for (const std::string column : {"energy_total",
+                                   "contact_force",
+                                   "active_nodes",
+                                   "contact_force_pair1",
+                                   "contact_force_pair2",
+                                   "momentum_y_body3"})
+    {
+      const auto a = near.column(column), b = far.column(column);
+      double     scale = 0.;
+      for (const double x : a)
+        scale = std::max(scale, std::abs(x));
+      for (unsigned int i = 0; i < a.size() && i < b.size(); ++i)
+        difference = std::max(difference, std::abs(a[i] - b[i]) / scale);
+    }
+  log() << "the middle block as the slave of both pairs: both pairs active: "
+        << check(max_of(near.column("active_nodes_pair1")) > 0 &&
+                 max_of(near.column("active_nodes_pair2")) > 0)
+        << "\n  search radius 0.5 m: both masters found, "
+        << far.column("rows_pair1")[0] + far.column("rows_pair2")[0]
+        << " rows for the 22 slave nodes: "
+        << check(far.column("rows_pair1")[0] + far.column("rows_pair2")[0] ==
+                 22)
+        << "; the run as with 0.2 m, which finds the nearer one only: "
+        << check(near.rows.size() == far.rows.size() && difference <= 1e-9)
+        << "\n";
+
+  // bad input
+  const std::vector<std::pair<std::string, std::string>> cases = {
+    {"unknown body",
+     "    set Contact tags = 11; 12; 14\n    set Contact pairs = 2 : 4\n"},
+    {"a body with itself",
+     "    set Contact tags = 11; 12; 14\n    set Contact pairs = 2 : 2\n"},
+    {"a pair twice",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 1 : 2\n"},
+    {"no contact tags",
+     "    set Contact tags = 11; 12;\n    set Contact pairs = 3 : 2\n"},
+    {"no pair",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 - 1\n"},
+    {"two items for three bodies", "    set Contact tags = 11; 12\n"},
+    {"contact tags in no pair",
+     "    set Contact tags = 11; 12; 14\n    set Contact pairs = 2 : 1\n"},
+    {"Bodies beside Initial velocity of body 2",
+     "    set Initial velocity of body 2 = 0, -3\n"},
+    {"Bodies beside Body 2 tags", "    set Body 2 tags = 2\n"},
+    {"overlapping bodies",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : 2\n"
+     "    set Mesh file = " +
+       std::filesystem::current_path().string() + "/overlap.msh\n"}};
+  // the upper block's bottom 0.05 m inside the middle block
+  write_msh("overlap.msh",
+            {Block{0., 2., -0.5, 0., 16, 4, 1, 10, 11},
+             Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
+             Block{0.6, 1.4, 0.3, 0.5, 9, 2, 3, 14, 0}});
+  for (const auto &[name, entries] : cases)
+    {
+      std::string message;
+      try
+        {
+          run(prm("bad", entries));
+        }
+      catch (const std::exception &e)
+        {
+          message = dyncontact::message_of(e);
+        }
+      // (the penetrating node's position depends on the ranks)
+      const std::string text = message.substr(0, message.find(": the slave"));
+      log() << name << ": " << (message.empty() ? "not refused" : text) << "\n";
+    }
+}
