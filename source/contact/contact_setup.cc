@@ -124,16 +124,10 @@ namespace dyncontact
     if (pairs.size() > 1)
       {
         // the bodies of each boundary id, for the banner's pairs
-        const unsigned int  n_bodies = scene.n_bodies();
-        std::vector<double> on_id(256 * n_bodies, 0.);
-        for (const auto &cell :
-             system.get_dof_handler().active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary())
-                on_id[cell->face(f)->boundary_id() % 256 * n_bodies +
-                      cell->material_id()] = 1.;
-        Utilities::MPI::max(on_id, comm, on_id);
+        const unsigned int      n_bodies = scene.n_bodies();
+        const std::vector<bool> on_id =
+          bodies_of_boundary_ids(system.get_dof_handler().get_triangulation(),
+                                 n_bodies);
         for (const ContactPair &pair : pairs)
           {
             std::array<std::string, 2> bodies;
@@ -143,7 +137,7 @@ namespace dyncontact
                   bool on_side = false;
                   for (const auto id :
                        side == 0 ? pair.first_side : pair.second_side)
-                    on_side = on_side || on_id[id % 256 * n_bodies + b] > 0.;
+                    on_side = on_side || on_id[id % 256 * n_bodies + b];
                   if (on_side)
                     bodies[side] +=
                       (bodies[side].empty() ? "" : "+") + std::to_string(b + 1);

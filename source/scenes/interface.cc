@@ -219,8 +219,30 @@ namespace dyncontact
                              " bodies (ids 0 to n-1)."));
   }
 
+  template <int dim>
+  std::vector<bool>
+  bodies_of_boundary_ids(const Triangulation<dim, dim> &triangulation,
+                         const unsigned int             n_bodies)
+  {
+    std::vector<double> on_id(256 * n_bodies, 0.);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            on_id[cell->face(f)->boundary_id() % 256 * n_bodies +
+                  cell->material_id()] = 1.;
+    Utilities::MPI::max(on_id, triangulation.get_communicator(), on_id);
+    return std::vector<bool>(on_id.begin(), on_id.end());
+  }
+
+
+
   template class Scene<2>;
   template class Scene<3>;
+  template std::vector<bool>
+  bodies_of_boundary_ids<2>(const Triangulation<2, 2> &, const unsigned int);
+  template std::vector<bool>
+  bodies_of_boundary_ids<3>(const Triangulation<3, 3> &, const unsigned int);
   template void
   build_mesh<2>(const Scene<2> &,
                 Triangulation<2, 2> &,

@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace dyncontact
 {
@@ -155,23 +154,21 @@ namespace dyncontact
         contacts.push_back(pair.second_side);
       }
     contacts.push_back(scene.contact_boundary_ids());
-    std::vector<double> touches(scene.n_bodies() * contacts.size(), 0.);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (unsigned int c = 0; c < contacts.size(); ++c)
-              if (std::find(contacts[c].begin(),
-                            contacts[c].end(),
-                            cell->face(f)->boundary_id()) != contacts[c].end())
-                touches[cell->material_id() * contacts.size() + c] = 1.;
-    Utilities::MPI::max(touches, comm, touches);
+    const std::vector<bool> on_id =
+      bodies_of_boundary_ids(triangulation, scene.n_bodies());
     for (unsigned int b = 0; b < unheld.size(); ++b)
-      if (unheld[b] == 1 &&
-          std::accumulate(touches.begin() + b * contacts.size(),
-                          touches.begin() + (b + 1) * contacts.size(),
-                          0.) >= 2.)
-        unheld[b] = 0;
+      {
+        unsigned int n_surfaces = 0;
+        for (const auto &surface : contacts)
+          {
+            bool touches = false;
+            for (const auto id : surface)
+              touches = touches || on_id[id % 256 * scene.n_bodies() + b];
+            n_surfaces += touches;
+          }
+        if (unheld[b] == 1 && n_surfaces >= 2)
+          unheld[b] = 0;
+      }
     std::string bodies;
     for (unsigned int b = 0; b < unheld.size(); ++b)
       if (unheld[b] > 0)

@@ -331,6 +331,16 @@ namespace dyncontact
    * Cell material ids become the index of the body; boundary and manifold
    * ids are kept.
    */
+  /**
+   * Which bodies have boundary faces with which boundary id, over all
+   * ranks: entry id * n_bodies + body is true if body has faces with that
+   * id. Collective.
+   */
+  template <int dim>
+  std::vector<bool>
+  bodies_of_boundary_ids(const Triangulation<dim, dim> &triangulation,
+                         const unsigned int             n_bodies);
+
   template <int dim>
   void
   merge_bodies(const std::vector<const Triangulation<dim, dim> *> &bodies,
