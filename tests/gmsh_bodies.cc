@@ -10,12 +10,23 @@
 // the nearer: 22 rows for its 22 slave nodes (40 if each kept every row),
 // and the run is that of a search radius of 0.2 m, which finds only the
 // nearer one (to 1e-9 of each column's largest value: the rows come in
-// another order). Bad input is refused with a message naming the pair or
-// the entry: an unknown body, a body paired with itself, a pair listed
-// twice (either way round), a body without contact tags, an item that is
-// no pair, item counts that differ from the number of bodies, contact tags
-// of a body that no pair names, Bodies beside Body 2 tags or Initial
-// velocity of body 2, and bodies that overlap at t = 0. On two MPI ranks
+// another order). A pair's own search radius ('3 : 2 : 0.01') is not
+// overridden by Contact/Search radius: 0.01 m finds no master 0.05 m away,
+// and own radii of 0.2 m beside a global 0.01 m give the run of a global
+// 0.2 m. The rigid obstacle as a master ('1 : obstacle, 2 : 1', the middle
+// and upper blocks alone above the half-space y <= 0): the lower block
+// reaches it at 0.1 s, the upper one the lower one later, E + W never
+// increases, nothing penetrates; the lower block as the slave of the
+// obstacle and of the upper block (own radius 0.5 m) keeps each node's
+// nearer row (9 + 13 rows for 22 nodes). Bad input is refused with a
+// message naming the pair or the entry: an unknown body, a body paired with
+// itself, a pair listed twice (either way round), a body without contact
+// tags, an item that is no pair, item counts that differ from the number of
+// bodies, contact tags of a body that no pair names, Bodies beside Body 2
+// tags or Initial velocity of body 2, the obstacle as a slave, without its
+// point and normal, given but in no pair, twice, with a search radius, with
+// a normal of length 0, a negative search radius, a body inside the
+// obstacle, and bodies that overlap at t = 0. On two MPI ranks
 // (gmsh_bodies.mpirun=2) with the same output.
 
 #include <dyncontact/base/collective_errors.h>
@@ -80,20 +91,23 @@ namespace
 
   /// The run's input: the three blocks with @p entries in Scene/Gmsh and
   /// the search radius @p radius.
+  const std::string three_blocks =
+    "    set Bodies = 1; 2; 3\n"
+    "    set Dirichlet tags = 10\n"
+    "    set Initial velocities = 0, 0; 0, -0.5; 0, -0.5\n";
+
   std::string
   prm(const std::string &name,
       const std::string &entries,
-      const double       radius = 0.2)
+      const double       radius = 0.2,
+      const std::string &mesh   = "three_blocks.msh",
+      const std::string &bodies = three_blocks)
   {
     return "set Dimension = 2\nset Output directory = results-" + name + "\n" +
-           testing::scene_prm(
-             "gmsh",
-             "    set Mesh file = " + std::filesystem::current_path().string() +
-               "/three_blocks.msh\n"
-               "    set Bodies = 1; 2; 3\n"
-               "    set Dirichlet tags = 10\n"
-               "    set Initial velocities = 0, 0; 0, -0.5; 0, -0.5\n" +
-               entries) +
+           testing::scene_prm("gmsh",
+                              "    set Mesh file = " +
+                                std::filesystem::current_path().string() + "/" +
+                                mesh + "\n" + bodies + entries) +
            "subsection Contact\n  set Search radius = " + testing::fmt(radius) +
            "\nend\n"
            "subsection Material\n  set Young's modulus = 100\n"
@@ -103,6 +117,22 @@ namespace
            "subsection Time integration\n  set Scheme = N-CS++\n"
            "  set Time step = 0.005\n  set End time = 0.3\nend\n"
            "subsection Output\n  set Write vtu = false\nend\n";
+  }
+  /// Whether @p a and @p b have the same columns and values, the wall time
+  /// left out.
+  bool
+  same_run(const testing::Statistics &a, const testing::Statistics &b)
+  {
+    if (a.columns != b.columns || a.rows.size() != b.rows.size())
+      return false;
+    const unsigned int wall = a.column_index("step_wall_time");
+    for (unsigned int i = 0; i < a.rows.size(); ++i)
+      for (unsigned int j = 0; j < a.columns.size(); ++j)
+        if (j != wall &&
+            !(a.rows[i][j] == b.rows[i][j] ||
+              (std::isnan(a.rows[i][j]) && std::isnan(b.rows[i][j]))))
+          return false;
+    return true;
   }
 } // namespace
 
@@ -175,6 +205,92 @@ main(int argc, char **argv)
         << check(near.rows.size() == far.rows.size() && difference <= 1e-9)
         << "\n";
 
+  // a pair's own search radius, which Contact/Search radius does not
+  // override: 0.01 m finds no master 0.05 m away, 0.2 m beside a global
+  // 0.01 m is the run of a global 0.2 m
+  const Statistics own_small =
+    run(prm("own-small",
+            "    set Contact tags = 11; 12, 13; 14\n"
+            "    set Contact pairs = 2 : 1, 3 : 2 : 0.01\n"));
+  const Statistics own_large =
+    run(prm("own-large",
+            "    set Contact tags = 11; 12, 13; 14\n"
+            "    set Contact pairs = 2 : 1 : 0.2, 3 : 2 : 0.2\n",
+            0.01));
+  log() << "own search radius: '3 : 2 : 0.01' (global 0.2 m): "
+        << own_small.column("rows_pair2")[0]
+        << " rows in pair 2: " << check(own_small.column("rows_pair2")[0] == 0)
+        << "; '2 : 1 : 0.2, 3 : 2 : 0.2' (global 0.01 m): "
+        << own_large.column("rows_pair1")[0] << " + "
+        << own_large.column("rows_pair2")[0] << " rows, the run of a global "
+        << "0.2 m: " << check(same_run(own_large, s)) << "\n";
+
+  // the rigid obstacle as a master: the middle and the upper block alone,
+  // the middle one on the obstacle y <= 0 (pair 2 in the statistics: the
+  // obstacle comes after the pairs of two bodies), the upper one on it
+  write_msh("two_blocks.msh",
+            {Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
+             Block{0.6, 1.4, 0.4, 0.6, 9, 2, 3, 14, 0}});
+  const std::string two_blocks = "    set Bodies = 2; 3\n"
+                                 "    set Initial velocities = 0, -0.5; 0, "
+                                 "-0.5\n"
+                                 "    set Obstacle point = 0, 0\n"
+                                 "    set Obstacle normal = 0, 2\n";
+  const Statistics  on_obstacle =
+    run(prm("obstacle",
+            "    set Contact tags = 12, 13; 14\n"
+            "    set Contact pairs = 1 : obstacle, 2 : 1\n",
+            0.2,
+            "two_blocks.msh",
+            two_blocks));
+  for (unsigned int k = 0; k < 2; ++k)
+    {
+      first[k] = -1.;
+      const auto active =
+        on_obstacle.column("active_nodes_pair" + std::to_string(2 - k));
+      for (unsigned int i = 0; i < time.size() && first[k] < 0.; ++i)
+        if (active[i] > 0)
+          first[k] = time[i];
+    }
+  log() << "two blocks on the rigid obstacle, pairs 1 : obstacle, 2 : 1: "
+        << on_obstacle.column("rows_pair2")[0]
+        << " obstacle rows; the lower block reaches it at " << fmt(first[0], 2)
+        << " s (g/v = 0.1): " << check(std::abs(first[0] - 0.1) <= 0.01)
+        << ", the upper block reaches the lower one later, at "
+        << fmt(first[1], 2) << " s: " << check(first[1] > first[0]) << "\n";
+  log() << "  E + W non-increasing: "
+        << check(max_energy_increase(on_obstacle) <=
+                 1e-10 * on_obstacle.column("energy_total")[0])
+        << "; no penetration: "
+        << check(max_of(on_obstacle.column("max_penetration")) < 1e-12) << "\n";
+  // the lower block the slave of the obstacle and of the upper block, whose
+  // own radius of 0.5 m lets the lower block's bottom nodes find it too:
+  // each node keeps the row of the nearer master
+  const Statistics obstacle_far =
+    run(prm("obstacle-far",
+            "    set Contact tags = 12, 13; 14\n"
+            "    set Contact pairs = 1 : obstacle, 1 : 2 : 0.5\n",
+            0.2,
+            "two_blocks.msh",
+            two_blocks));
+  log() << "  the lower block the slave of both: "
+        << obstacle_far.column("rows_pair1")[0] << " + "
+        << obstacle_far.column("rows_pair2")[0]
+        << " rows for its 22 slave nodes (the 9 top nodes above the upper "
+           "block in pair 1, the 11 bottom nodes and the 2 top corners "
+           "beside the upper block on the obstacle): "
+        << check(obstacle_far.column("rows_pair1")[0] == 9 &&
+                 obstacle_far.column("rows_pair2")[0] == 13)
+        << "\n  both active: "
+        << check(max_of(obstacle_far.column("active_nodes_pair1")) > 0 &&
+                 max_of(obstacle_far.column("active_nodes_pair2")) > 0)
+        << "; E + W non-increasing: "
+        << check(max_energy_increase(obstacle_far) <=
+                 1e-10 * obstacle_far.column("energy_total")[0])
+        << "; no penetration: "
+        << check(max_of(obstacle_far.column("max_penetration")) < 1e-12)
+        << "\n";
+
   // bad input
   const std::vector<std::pair<std::string, std::string>> cases = {
     {"unknown body",
@@ -195,6 +311,35 @@ main(int argc, char **argv)
     {"Bodies beside Initial velocity of body 2",
      "    set Initial velocity of body 2 = 0, -3\n"},
     {"Bodies beside Body 2 tags", "    set Body 2 tags = 2\n"},
+    {"the obstacle as the slave",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : 2, obstacle : 1\n"},
+    {"the obstacle without its plane",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : obstacle\n"},
+    {"an obstacle no pair names",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : 2\n"
+     "    set Obstacle point = 0, 0\n    set Obstacle normal = 0, 1\n"},
+    {"the obstacle twice",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : obstacle, 3 : obstacle\n"
+     "    set Obstacle point = 0, 0\n    set Obstacle normal = 0, 1\n"},
+    {"a search radius for the obstacle",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : obstacle : 0.1\n"
+     "    set Obstacle point = 0, 0\n    set Obstacle normal = 0, 1\n"},
+    {"an obstacle normal of length 0",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : obstacle\n"
+     "    set Obstacle point = 0, 0\n    set Obstacle normal = 0, 0\n"},
+    {"a negative search radius",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1 : -1, 3 : 2\n"},
+    {"a block inside the obstacle",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1, 3 : 2, 3 : obstacle\n"
+     "    set Obstacle point = 0, 0.5\n    set Obstacle normal = 0, 1\n"},
     {"overlapping bodies",
      "    set Contact tags = 11; 12; 14\n"
      "    set Contact pairs = 2 : 1, 3 : 2\n"
@@ -217,7 +362,8 @@ main(int argc, char **argv)
           message = dyncontact::message_of(e);
         }
       // (the penetrating node's position depends on the ranks)
-      const std::string text = message.substr(0, message.find(": the slave"));
+      const std::string text = message.substr(
+        0, std::min(message.find(": the slave"), message.find(": the node")));
       log() << name << ": " << (message.empty() ? "not refused" : text) << "\n";
     }
 }

@@ -33,7 +33,9 @@ namespace dyncontact
                       "Two-body scenes: slave nodes farther than this from "
                       "the master surface (in the reference configuration) "
                       "get no constraint row, in m; 0 = the scene's default "
-                      "(the gmsh scene has none).");
+                      "(the gmsh scene has none). A pair given its own "
+                      "radius (Scene/Gmsh/Contact pairs 'slave : master : "
+                      "radius') keeps it.");
     prm.declare_entry("Initial penetration",
                       "reject",
                       Patterns::Selection("reject|project"),
@@ -80,7 +82,7 @@ namespace dyncontact
       {
         if (parameters.slave_side >= 0)
           pair.slave_side = parameters.slave_side;
-        if (parameters.search_radius > 0.)
+        if (parameters.search_radius > 0. && !pair.own_search_radius)
           pair.search_radius = parameters.search_radius;
       }
     return pairs;
@@ -121,29 +123,30 @@ namespace dyncontact
     for (const ContactPair &pair : pairs)
       search_radii.push_back(pair.search_radius);
     side_bodies.clear();
-    if (pairs.size() > 1)
+    several_pairs = pairs.size() + (scene.obstacle() ? 1 : 0) > 1;
+    // the bodies of the contact boundary ids @p ids, as "1+3", for the
+    // banner
+    std::vector<bool> on_id;
+    const auto bodies_on = [&](const std::vector<types::boundary_id> &ids) {
+      std::string bodies;
+      for (unsigned int b = 0; b < scene.n_bodies(); ++b)
+        {
+          bool on = false;
+          for (const auto id : ids)
+            on = on || on_id[id % 256 * scene.n_bodies() + b];
+          if (on)
+            bodies += (bodies.empty() ? "" : "+") + std::to_string(b + 1);
+        }
+      return bodies;
+    };
+    if (several_pairs)
       {
-        // the bodies of each boundary id, for the banner's pairs
-        const unsigned int      n_bodies = scene.n_bodies();
-        const std::vector<bool> on_id =
+        on_id =
           bodies_of_boundary_ids(system.get_dof_handler().get_triangulation(),
-                                 n_bodies);
+                                 scene.n_bodies());
         for (const ContactPair &pair : pairs)
-          {
-            std::array<std::string, 2> bodies;
-            for (unsigned int side = 0; side < 2; ++side)
-              for (unsigned int b = 0; b < n_bodies; ++b)
-                {
-                  bool on_side = false;
-                  for (const auto id :
-                       side == 0 ? pair.first_side : pair.second_side)
-                    on_side = on_side || on_id[id % 256 * n_bodies + b];
-                  if (on_side)
-                    bodies[side] +=
-                      (bodies[side].empty() ? "" : "+") + std::to_string(b + 1);
-                }
-            side_bodies.push_back(bodies);
-          }
+          side_bodies.push_back(
+            {{bodies_on(pair.first_side), bodies_on(pair.second_side)}});
       }
     if (const auto obstacle = scene.obstacle())
       add_obstacle_rows(*obstacle,
@@ -153,6 +156,8 @@ namespace dyncontact
                                        scene.contact_boundary_ids()),
                         w_ghosted,
                         system.get_constraints());
+    const types::global_dof_index n_obstacle_rows =
+      Utilities::MPI::sum<types::global_dof_index>(rows.size(), comm);
     for (unsigned int pair_index = 0; pair_index < pairs.size(); ++pair_index)
       add_pair_rows(scene,
                     pairs[pair_index],
@@ -161,8 +166,13 @@ namespace dyncontact
                     mapping,
                     w_ghosted,
                     pcout);
+    if (scene.obstacle() && several_pairs)
+      pcout << "   contact pair " << pairs.size() + 1 << ": slave body "
+            << bodies_on(scene.contact_boundary_ids()) << " ("
+            << n_obstacle_rows << " nodes), master the rigid obstacle"
+            << std::endl;
 
-    if (pairs.size() + (scene.obstacle() ? 1 : 0) > 1)
+    if (several_pairs)
       keep_nearest_rows();
 
     // the penetration check of the slave nodes without a row keeps this
@@ -490,7 +500,7 @@ namespace dyncontact
             penetration.empty())
           penetration =
             "The initial configuration penetrates" +
-            (scene.contact_pairs().size() > 1 ?
+            (several_pairs ?
                " (contact pair " + std::to_string(pair_index + 1) + ")" :
                std::string()) +
             ": the slave node at (" + Utilities::to_string(x[0]) + ", " +
@@ -522,9 +532,8 @@ namespace dyncontact
     stop_with_any_message(penetration, comm);
     refuse_clamped_slave_nodes(n_clamped, pair_index, slave, comm);
     pcout << "   contact pair"
-          << (scene.contact_pairs().size() > 1 ?
-                " " + std::to_string(pair_index + 1) :
-                std::string())
+          << (several_pairs ? " " + std::to_string(pair_index + 1) :
+                              std::string())
           << ": slave is side " << slave + 1 << " ("
           << (pair_index < side_bodies.size() ?
                 "body " + side_bodies[pair_index][slave] + ", " :

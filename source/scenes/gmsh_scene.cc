@@ -318,7 +318,28 @@ namespace dyncontact
                       "its slave's nodes carry the rows (unless "
                       "Contact/Slave side says 1 or 2), and a slave node "
                       "that finds a master surface in two pairs keeps the "
-                      "row of the nearer.");
+                      "row of the nearer. The master can be 'obstacle', the "
+                      "rigid obstacle of Obstacle point and Obstacle normal "
+                      "(e.g. '1 : obstacle, 2 : 1'; it is one pair for all "
+                      "bodies it names, numbered after the pairs of two "
+                      "bodies in the statistics). A pair of two bodies can "
+                      "have its own search radius in m, in (0, 1e15], "
+                      "as a third item (e.g. '2 : 1 : 0.01'), which "
+                      "Contact/Search radius does not override.");
+    prm.declare_entry("Obstacle point",
+                      "",
+                      Patterns::Anything(),
+                      "With a pair 'slave : obstacle': a point on the "
+                      "surface of the rigid obstacle, the half-space behind "
+                      "it, components in m, each in [-1e15, 1e15]; empty: "
+                      "no obstacle.");
+    prm.declare_entry("Obstacle normal",
+                      "",
+                      Patterns::Anything(),
+                      "With a pair 'slave : obstacle': the normal of the "
+                      "obstacle's surface, pointing out of the obstacle "
+                      "into free space (any length > 0; it is normalised), "
+                      "components comma-separated; empty: no obstacle.");
     prm.declare_entry("Gravity",
                       "0, 0, 0",
                       Patterns::Anything(),
@@ -351,6 +372,7 @@ namespace dyncontact
     contact_entries.clear();
     velocity.clear();
     pairs.clear();
+    obstacle_slaves.clear();
     pairs_listed = !bodies.empty();
     if (bodies.empty())
       {
@@ -391,8 +413,13 @@ namespace dyncontact
                     ExcMessage("Scene/Gmsh: contact needs two bodies, and "
                                "contact tags on both (Contact tags of body 1 "
                                "and 2)."));
+        for (const std::string entry : {"Obstacle point", "Obstacle normal"})
+          AssertThrow(prm.get(entry).empty(),
+                      ExcMessage("Scene/Gmsh/" + entry +
+                                 " needs Scene/Gmsh/Bodies and a pair 'body : "
+                                 "obstacle' in Scene/Gmsh/Contact pairs."));
         if (!contact_tags[0].empty())
-          pairs.emplace_back(0, 1);
+          pairs.push_back({0, 1, 0.});
       }
     else
       {
@@ -475,20 +502,40 @@ namespace dyncontact
         const std::string list = prm.get("Contact pairs");
         for (const std::string &item : Utilities::split_string_list(list, ','))
           {
-            const auto          sides = Utilities::split_string_list(item, ':');
+            const auto sides = Utilities::split_string_list(item, ':');
+            AssertThrow(sides.empty() || sides[0] != "obstacle",
+                        ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                   item +
+                                   "' makes the rigid obstacle the slave; it "
+                                   "can only be the master (write 'body : "
+                                   "obstacle')."));
             std::array<long, 2> body{{0, 0}};
-            bool                valid = sides.size() == 2;
+            double              radius = 0.;
+            bool                valid  = sides.size() == 2 || sides.size() == 3;
             for (unsigned int k = 0; valid && k < 2; ++k)
               {
                 char *end = nullptr;
                 body[k]   = std::strtol(sides[k].c_str(), &end, 10);
                 valid     = !sides[k].empty() && *end == '\0';
+                if (k == 1 && sides[k] == "obstacle")
+                  {
+                    body[k] = 0;
+                    valid   = true;
+                  }
+              }
+            if (valid && sides.size() == 3)
+              {
+                char *end = nullptr;
+                radius    = std::strtod(sides[2].c_str(), &end);
+                valid     = !sides[2].empty() && *end == '\0';
               }
             AssertThrow(valid,
                         ExcMessage("Scene/Gmsh/Contact pairs: '" + item +
                                    "' is no pair 'slave : master' of body "
-                                   "numbers."));
-            for (unsigned int k = 0; k < 2; ++k)
+                                   "numbers (the master can be 'obstacle'), "
+                                   "or 'slave : master : search radius'."));
+            const bool with_obstacle = sides[1] == "obstacle";
+            for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
               AssertThrow(body[k] >= 1 && body[k] <= long(n),
                           ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
                                      item + "' names body " + sides[k] +
@@ -499,32 +546,79 @@ namespace dyncontact
                         ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
                                    item + "' pairs body " +
                                    std::to_string(body[0]) + " with itself."));
-            const std::pair<unsigned int, unsigned int> pair(body[0] - 1,
-                                                             body[1] - 1);
-            for (const auto &[slave, master] : pairs)
-              AssertThrow(std::minmax(slave, master) !=
-                            std::minmax(pair.first, pair.second),
-                          ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
-                                     item +
-                                     "' is listed twice (a pair of two "
-                                     "bodies is listed once, either way)."));
-            for (const unsigned int b : {pair.first, pair.second})
-              AssertThrow(!contact_tags[b].empty(),
+            AssertThrow(sides.size() == 2 || !with_obstacle,
+                        ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                   item +
+                                   "' gives the rigid obstacle a search "
+                                   "radius; every slave node of the obstacle "
+                                   "gets a row, leave the radius out."));
+            AssertThrow(sides.size() == 2 || (std::isfinite(radius) &&
+                                              radius > 0. && radius <= 1e15),
+                        ExcMessage("Scene/Gmsh/Contact pairs: the search "
+                                   "radius of the pair '" +
+                                   item + "' must lie in (0, 1e15] m."));
+            const unsigned int slave  = body[0] - 1;
+            const unsigned int master = with_obstacle ? 0 : body[1] - 1;
+            if (with_obstacle)
+              {
+                AssertThrow(obstacle_slaves.insert(slave).second,
+                            ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                       item + "' is listed twice."));
+              }
+            else
+              {
+                for (const BodyPair &pair : pairs)
+                  AssertThrow(std::minmax(pair.slave, pair.master) !=
+                                std::minmax(slave, master),
+                              ExcMessage(
+                                "Scene/Gmsh/Contact pairs: the pair '" + item +
+                                "' is listed twice (a pair of two "
+                                "bodies is listed once, either "
+                                "way)."));
+              }
+            for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
+              AssertThrow(!contact_tags[body[k] - 1].empty(),
                           ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
                                      item + "' names body " +
-                                     std::to_string(b + 1) +
+                                     std::to_string(body[k]) +
                                      ", which has no Scene/Gmsh/Contact "
                                      "tags."));
-            pairs.push_back(pair);
+            if (!with_obstacle)
+              pairs.push_back({slave, master, radius});
+          }
+        // the rigid obstacle
+        const std::string point  = prm.get("Obstacle point");
+        const std::string normal = prm.get("Obstacle normal");
+        AssertThrow(
+          (point.empty() && normal.empty()) == obstacle_slaves.empty(),
+          ExcMessage(obstacle_slaves.empty() ?
+                       "Scene/Gmsh/Obstacle point and Obstacle normal are "
+                       "given, but no pair of Scene/Gmsh/Contact pairs "
+                       "names the obstacle ('body : obstacle'): name it, "
+                       "or leave them out." :
+                       "Scene/Gmsh/Contact pairs names the rigid obstacle: "
+                       "give both Scene/Gmsh/Obstacle point and "
+                       "Scene/Gmsh/Obstacle normal."));
+        if (!obstacle_slaves.empty())
+          {
+            rigid_obstacle.point =
+              Point<dim>(parse_vector<dim>(point, "Obstacle point", 1e15, "m"));
+            rigid_obstacle.normal =
+              parse_vector<dim>(normal, "Obstacle normal", 1e15, "");
+            const double length = rigid_obstacle.normal.norm();
+            AssertThrow(length > 0. && std::isfinite(length),
+                        ExcMessage("Scene/Gmsh/Obstacle normal = '" + normal +
+                                   "' must have a length > 0."));
+            rigid_obstacle.normal /= length;
           }
         // contact tags that no pair uses: bodies that would pass through
         // each other unnoticed
         for (unsigned int b = 0; b < n; ++b)
           if (!contact_tags[b].empty())
             {
-              bool paired = false;
-              for (const auto &[slave, master] : pairs)
-                paired = paired || slave == b || master == b;
+              bool paired = obstacle_slaves.count(b) > 0;
+              for (const BodyPair &pair : pairs)
+                paired = paired || pair.slave == b || pair.master == b;
               AssertThrow(paired,
                           ExcMessage(
                             "Scene/Gmsh/Contact tags give body " +
@@ -581,18 +675,45 @@ namespace dyncontact
   GmshScene<dim>::contact_pairs() const
   {
     std::vector<ContactPair> result;
-    for (const auto &[slave, master] : pairs)
+    for (const BodyPair &body_pair : pairs)
       {
         ContactPair pair;
-        pair.first_side  = contact_tags[slave];
-        pair.second_side = contact_tags[master];
+        pair.first_side  = contact_tags[body_pair.slave];
+        pair.second_side = contact_tags[body_pair.master];
         // Body 1 tags and Body 2 tags: Contact/Slave side decides (auto:
         // the finer side); a list of pairs names the slave
         if (pairs_listed)
           pair.slave_side = 0;
+        pair.search_radius     = body_pair.search_radius;
+        pair.own_search_radius = body_pair.search_radius > 0.;
         result.push_back(pair);
       }
     return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<types::boundary_id>
+  GmshScene<dim>::contact_boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const unsigned int body : obstacle_slaves)
+      ids.insert(ids.end(),
+                 contact_tags[body].begin(),
+                 contact_tags[body].end());
+    return ids;
+  }
+
+
+
+  template <int dim>
+  std::optional<RigidObstacle<dim>>
+  GmshScene<dim>::obstacle() const
+  {
+    if (obstacle_slaves.empty())
+      return {};
+    return rigid_obstacle;
   }
 
 

@@ -241,10 +241,13 @@ namespace dyncontact
     /// bodies of its two sides, for the banner.
     std::vector<double>                     search_radii;
     std::vector<std::array<std::string, 2>> side_bodies;
-    IndexSet                                locally_owned;
-    IndexSet                                locally_relevant;
-    std::vector<types::global_dof_index>    row_scalar_dofs;
-    ContactRowOperator                      row_operator;
+    /// Whether the scene has more than one pair (the obstacle counted):
+    /// messages and the banner number them.
+    bool                                 several_pairs = false;
+    IndexSet                             locally_owned;
+    IndexSet                             locally_relevant;
+    std::vector<types::global_dof_index> row_scalar_dofs;
+    ContactRowOperator                   row_operator;
     /// Per pair: the slave side (0, 1) of the last set-up, and those kept by
     /// keep_slave_sides() (empty: chosen anew at each set-up).
     std::vector<unsigned int> slave_sides;

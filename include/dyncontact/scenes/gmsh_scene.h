@@ -17,7 +17,9 @@ namespace dyncontact
    * boundaries. Bodies must not share vertices. Two bodies can be given by
    * 'Body 1 tags' and 'Body 2 tags' (one contact pair); any number by
    * 'Bodies', with 'Contact tags', 'Initial velocities' and a list of
-   * 'Contact pairs' (slave : master, body numbers). The mesh is checked
+   * 'Contact pairs' (slave : master, body numbers, a master can be the
+   * rigid obstacle, a half-space; a pair can have its own search radius).
+   * The mesh is checked
    * against the prm: every cell must belong to a body, every tag named in
    * the prm must exist in the mesh, otherwise the run stops with a message.
    */
@@ -55,6 +57,15 @@ namespace dyncontact
     std::vector<ContactPair>
     contact_pairs() const override;
 
+    /// The contact tags of the bodies paired with the obstacle.
+    std::vector<types::boundary_id>
+    contact_boundary_ids() const override;
+
+    /// The half-space of Obstacle point and Obstacle normal, if a pair
+    /// names it.
+    std::optional<RigidObstacle<dim>>
+    obstacle() const override;
+
     std::vector<DirichletBoundary>
     dirichlet_boundaries() const override;
 
@@ -78,14 +89,25 @@ namespace dyncontact
     std::vector<Tensor<1, dim>>                  velocity;
     /// The entry that gave each body's contact tags, for messages.
     std::vector<std::string> contact_entries;
-    /// (slave, master) bodies, counted from 0; whether listed in Contact
-    /// pairs (they then name the slave).
-    std::vector<std::pair<unsigned int, unsigned int>> pairs;
-    bool                                               pairs_listed = false;
-    std::set<unsigned int>                             dirichlet_tags;
-    std::set<unsigned int>                             neumann_tags;
-    Tensor<1, dim>                                     traction;
-    Tensor<1, dim>                                     gravity;
+    /// A pair of two bodies: slave and master, counted from 0, and its own
+    /// search radius (m; 0: Contact/Search radius).
+    struct BodyPair
+    {
+      unsigned int slave;
+      unsigned int master;
+      double       search_radius;
+    };
+    std::vector<BodyPair> pairs;
+    /// Whether the pairs were listed in Contact pairs (they then name the
+    /// slave).
+    bool pairs_listed = false;
+    /// The bodies paired with the rigid obstacle, and the obstacle.
+    std::set<unsigned int> obstacle_slaves;
+    RigidObstacle<dim>     rigid_obstacle;
+    std::set<unsigned int> dirichlet_tags;
+    std::set<unsigned int> neumann_tags;
+    Tensor<1, dim>         traction;
+    Tensor<1, dim>         gravity;
   };
 } // namespace dyncontact
 

@@ -62,6 +62,10 @@ namespace dyncontact
     /// In m; slave nodes farther than this from the master get no row; 0:
     /// the scene has no default.
     double search_radius = 0.;
+    /// Whether the input gave this pair its own search radius (e.g. in
+    /// Scene/Gmsh/Contact pairs): then Contact/Search radius, the radius of
+    /// every other pair, does not override it.
+    bool own_search_radius = false;
   };
 
   template <int dim>
@@ -326,12 +330,6 @@ namespace dyncontact
              const bool               coarse_only);
 
   /**
-   * Builds one coarse mesh from several coarse meshes (the bodies) without
-   * merging any vertices, so that bodies touching at t = 0 stay separate.
-   * Cell material ids become the index of the body; boundary and manifold
-   * ids are kept.
-   */
-  /**
    * Which bodies have boundary faces with which boundary id, over all
    * ranks: entry id * n_bodies + body is true if body has faces with that
    * id. Collective.
@@ -341,6 +339,12 @@ namespace dyncontact
   bodies_of_boundary_ids(const Triangulation<dim, dim> &triangulation,
                          const unsigned int             n_bodies);
 
+  /**
+   * Builds one coarse mesh from several coarse meshes (the bodies) without
+   * merging any vertices, so that bodies touching at t = 0 stay separate.
+   * Cell material ids become the index of the body; boundary and manifold
+   * ids are kept.
+   */
   template <int dim>
   void
   merge_bodies(const std::vector<const Triangulation<dim, dim> *> &bodies,
