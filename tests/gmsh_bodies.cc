@@ -18,15 +18,18 @@
 // reaches it at 0.1 s, the upper one the lower one later, E + W never
 // increases, nothing penetrates; the lower block as the slave of the
 // obstacle and of the upper block (own radius 0.5 m) keeps each node's
-// nearer row (9 + 13 rows for 22 nodes). Bad input is refused with a
-// message naming the pair or the entry: an unknown body, a body paired with
-// itself, a pair listed twice (either way round), a body without contact
-// tags, an item that is no pair, item counts that differ from the number of
-// bodies, contact tags of a body that no pair names, Bodies beside Body 2
-// tags or Initial velocity of body 2, the obstacle as a slave, without its
-// point and normal, given but in no pair, twice, with a search radius, with
-// a normal of length 0, a negative search radius, a body inside the
-// obstacle, and bodies that overlap at t = 0. On two MPI ranks
+// nearer row (9 + 13 rows for 22 nodes); a node that kept the row of the
+// nearer master is watched against the farther one: the upper block,
+// riding down on the lower one past the obstacle, is reported 0.05 m inside
+// it at T. Bad input is refused with a message naming the pair or the
+// entry: an unknown body, a body paired with itself, a pair listed twice
+// (either way round), a body without contact tags, an item that is no pair,
+// item counts that differ from the number of bodies, contact tags of a body
+// that no pair names, Bodies beside Body 2 tags or Initial velocity of
+// body 2, the obstacle as a slave, without its point and normal, given but
+// in no pair, twice, with a search radius, with a normal of length 0, a
+// trailing ':', a negative search radius, a body inside the obstacle, and
+// bodies that overlap at t = 0. On two MPI ranks
 // (gmsh_bodies.mpirun=2) with the same output.
 
 #include <dyncontact/base/collective_errors.h>
@@ -291,6 +294,37 @@ main(int argc, char **argv)
         << check(max_of(obstacle_far.column("max_penetration")) < 1e-12)
         << "\n";
 
+  // a node that kept the row of the nearer master is watched against the
+  // farther one: the upper block the slave of the lower one (0.05 m below,
+  // own radius 0.5 m) and of the obstacle y <= 0.3 (0.1 m below), both
+  // blocks falling at 0.5 m/s and the lower one paired with nothing else:
+  // the upper block's nodes keep their rows of the lower block, ride down
+  // with it and pass y = 0.3 at t = 0.2 s, 0.05 m deep at T = 0.3 s: the
+  // penetration is reported (max_penetration), not 0
+  const Statistics riding =
+    run(prm("riding",
+            "    set Contact tags = 12, 13; 14\n"
+            "    set Contact pairs = 2 : 1 : 0.5, 2 : obstacle\n",
+            0.2,
+            "two_blocks.msh",
+            "    set Bodies = 2; 3\n"
+            "    set Initial velocities = 0, -0.5; 0, -0.5\n"
+            "    set Obstacle point = 0, 0.3\n"
+            "    set Obstacle normal = 0, 1\n"));
+  const auto depth      = riding.column("max_penetration");
+  double     first_deep = -1.;
+  for (unsigned int i = 0; i < depth.size() && first_deep < 0.; ++i)
+    if (depth[i] > 1e-9)
+      first_deep = riding.column("time")[i];
+  log() << "a node that kept the nearer master's row, watched against the "
+           "obstacle: "
+        << riding.column("rows_pair1")[0] << " + "
+        << riding.column("rows_pair2")[0] << " rows; inside it from "
+        << fmt(first_deep, 2)
+        << " s (0.2): " << check(std::abs(first_deep - 0.2) <= 0.01) << ", "
+        << fmt(depth.back(), 2) << " m deep at T (0.05): "
+        << check(std::abs(depth.back() - 0.05) <= 0.005) << "\n";
+
   // bad input
   const std::vector<std::pair<std::string, std::string>> cases = {
     {"unknown body",
@@ -333,6 +367,9 @@ main(int argc, char **argv)
      "    set Contact tags = 11; 12; 14\n"
      "    set Contact pairs = 2 : 1, 3 : obstacle\n"
      "    set Obstacle point = 0, 0\n    set Obstacle normal = 0, 0\n"},
+    {"a trailing ':'",
+     "    set Contact tags = 11; 12; 14\n"
+     "    set Contact pairs = 2 : 1 :, 3 : 2\n"},
     {"a negative search radius",
      "    set Contact tags = 11; 12; 14\n"
      "    set Contact pairs = 2 : 1 : -1, 3 : 2\n"},

@@ -179,7 +179,8 @@ namespace dyncontact
     // rank's master faces, but only if there are such nodes
     n_unmatched_nodes =
       Utilities::MPI::sum<types::global_dof_index>(unmatched.size(), comm);
-    n_unmatched_in_pair.assign(master_surfaces.size(), 0);
+    obstacle_plane = scene.obstacle();
+    n_unmatched_in_pair.assign(pairs.size() + 1, 0);
     for (const auto &node : unmatched)
       ++n_unmatched_in_pair[node.pair];
     Utilities::MPI::sum(n_unmatched_in_pair, comm, n_unmatched_in_pair);
@@ -224,6 +225,21 @@ namespace dyncontact
         {
           kept.rows.push_back(rows.rows[r]);
           kept_dofs.push_back(row_scalar_dofs[r]);
+        }
+      else
+        {
+          // the farther master can still come nearer later (the rows are
+          // chosen on the mesh's reference configuration): the node is
+          // watched against it by unmatched_penetration()
+          const ContactRow &row = rows.rows[r];
+          UnmatchedNode     node;
+          node.pair = row.pair;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              node.x[d]    = row.position[d];
+              node.dofs[d] = row.entries[d].first;
+            }
+          unmatched.push_back(node);
         }
     rows            = std::move(kept);
     row_scalar_dofs = std::move(kept_dofs);
@@ -603,6 +619,24 @@ namespace dyncontact
                 }
             }
       }
+    // nodes that kept the row of a master nearer than the obstacle
+    if (obstacle_plane && n_unmatched_in_pair[master_surfaces.size()] > 0)
+      for (const auto &node : unmatched)
+        if (node.pair == master_surfaces.size())
+          {
+            Point<dim> y = node.x;
+            for (unsigned int d = 0; d < dim; ++d)
+              y[d] += ghosted(node.dofs[d]);
+            const double depth =
+              -((y - obstacle_plane->point) * obstacle_plane->normal);
+            // (round-off of a node on the surface is no penetration)
+            if (depth > deepest.depth && depth > 1e-12 * (1. + y.norm()))
+              {
+                deepest.depth    = depth;
+                deepest.position = node.x;
+                deepest.pair     = node.pair;
+              }
+          }
     // the deepest over all ranks (the first rank among equals), with its
     // position
     const double       depth   = Utilities::MPI::max(deepest.depth, comm);
@@ -636,16 +670,29 @@ namespace dyncontact
     std::ostringstream where;
     for (unsigned int d = 0; d < dim; ++d)
       where << (d > 0 ? ", " : "") << deepest.position[d];
-    AssertThrow(deepest.depth <= 1e-10 * search_radii[deepest.pair],
+    AssertThrow(deepest.pair < search_radii.size() ||
+                  deepest.depth <= 1e-12 * (deepest.depth + 1.),
+                ExcMessage("The bodies overlap at t = 0: the slave node at (" +
+                           where.str() + ") lies " +
+                           Utilities::to_string(deepest.depth) +
+                           " m inside the rigid obstacle (contact pair " +
+                           std::to_string(deepest.pair + 1) +
+                           "), and kept the row of a nearer master. Correct "
+                           "the mesh or the initial displacement."));
+    AssertThrow(deepest.pair >= search_radii.size() ||
+                  deepest.depth <= 1e-10 * search_radius(deepest.pair),
                 ExcMessage("The bodies overlap at t = 0 (contact pair " +
                            std::to_string(deepest.pair + 1) +
                            "): the slave node at (" + where.str() + ") lies " +
                            Utilities::to_string(deepest.depth) +
-                           " m inside the other body, farther than "
-                           "'Contact/Search radius' from the master surface "
-                           "(so it got no row that could reject or project "
-                           "it). Correct the mesh or the initial "
-                           "displacement."));
+                           " m inside the other body, farther than the "
+                           "pair's search radius (" +
+                           Utilities::to_string(search_radius(deepest.pair)) +
+                           " m: Contact/Search radius, or the pair's own) "
+                           "from the master surface, or nearer to a master "
+                           "of another pair, so that it got no row of this "
+                           "pair that could reject or project it. Correct "
+                           "the mesh or the initial displacement."));
   }
 
 

@@ -167,12 +167,31 @@ namespace dyncontact
                     << " s): the slave node at (";
                 for (unsigned int d = 0; d < dim; ++d)
                   out << (d > 0 ? ", " : "") << unmatched.position[d];
-                out << ") has no constraint row and lies " << unmatched.depth
-                    << " m inside the other body: it was farther than "
-                       "'Contact/Search radius' from the master surface "
-                       "when the rows were built. Increase the search "
-                       "radius."
-                    << (n_warnings == 3 ? " (Further such warnings are not "
+                const auto        &contact = this->get_contact();
+                const unsigned int n_pairs =
+                  this->get_scene().contact_pairs().size();
+                const std::string pair =
+                  n_pairs + (this->get_scene().obstacle() ? 1 : 0) > 1 ?
+                    " of contact pair " + std::to_string(unmatched.pair + 1) :
+                    std::string();
+                if (unmatched.pair >= n_pairs)
+                  out << ") has no constraint row" << pair << " and lies "
+                      << unmatched.depth
+                      << " m inside the rigid obstacle: it kept the row of "
+                         "a master that is nearer in the reference "
+                         "configuration, where the rows are chosen (the "
+                         "linearised contact assumes small displacements).";
+                else
+                  out << ") has no constraint row" << pair << " and lies "
+                      << unmatched.depth
+                      << " m inside the other body: it was farther than "
+                         "the pair's search radius ("
+                      << contact.search_radius(unmatched.pair)
+                      << " m, 'Contact/Search radius' or the pair's own) "
+                         "from the master surface, or nearer to a master of "
+                         "another pair, when the rows were built. Increase "
+                         "the search radius.";
+                out << (n_warnings == 3 ? " (Further such warnings are not "
                                           "printed; see the column "
                                           "max_penetration.)" :
                                           "")

@@ -90,9 +90,10 @@ namespace dyncontact
 
     /// The cell tags of each body, as the prm gives them, for messages.
     std::string
-    bodies_text(const std::vector<std::set<unsigned int>> &body_tags)
+    bodies_text(const std::vector<std::set<unsigned int>> &body_tags,
+                const bool                                 listed)
     {
-      if (body_tags.size() <= 2)
+      if (!listed)
         return "Scene/Gmsh/Body 1 tags = " + to_list(body_tags[0]) +
                ", Scene/Gmsh/Body 2 tags = " +
                (body_tags.size() > 1 ? to_list(body_tags[1]) : "");
@@ -109,6 +110,7 @@ namespace dyncontact
     unsigned int
     body_of_cell_tag(const unsigned int                         tag,
                      const std::vector<std::set<unsigned int>> &body_tags,
+                     const bool                                 listed,
                      const std::string                         &mesh_file)
     {
       int body = -1;
@@ -119,19 +121,22 @@ namespace dyncontact
                   ExcMessage("Mesh file '" + mesh_file +
                              "': cells with physical tag " +
                              std::to_string(tag) + " belong to no body (" +
-                             bodies_text(body_tags) + ")."));
+                             bodies_text(body_tags, listed) + ")."));
       return body;
     }
 
     /**
      * Replaces the physical tag (material id) of every cell of @p tria by
-     * the number of its body. Checks that the two bodies share no vertex and
-     * that the mesh has cells with every tag in @p body_tags.
+     * the number of its body. Checks that the bodies share no vertex and
+     * that the mesh has cells with every tag in @p body_tags; @p listed:
+     * the bodies were given by Bodies (else by Body 1 and 2 tags), for
+     * messages.
      */
     template <int dim>
     void
     set_bodies(Triangulation<dim, dim>                   &tria,
                const std::vector<std::set<unsigned int>> &body_tags,
+               const bool                                 listed,
                const std::string                         &mesh_file)
     {
       std::set<unsigned int>               cell_tags;
@@ -140,7 +145,8 @@ namespace dyncontact
         {
           const unsigned int tag = cell->material_id();
           cell_tags.insert(tag);
-          const unsigned int body = body_of_cell_tag(tag, body_tags, mesh_file);
+          const unsigned int body =
+            body_of_cell_tag(tag, body_tags, listed, mesh_file);
           cell->set_material_id(body);
           for (const auto v : cell->vertex_indices())
             {
@@ -159,14 +165,14 @@ namespace dyncontact
         }
       for (unsigned int b = 0; b < body_tags.size(); ++b)
         for (const auto tag : body_tags[b])
-          AssertThrow(
-            cell_tags.count(tag),
-            ExcMessage(
-              (body_tags.size() <= 2 ?
-                 "Scene/Gmsh/Body " + std::to_string(b + 1) + " tags" :
-                 "Scene/Gmsh/Bodies (body " + std::to_string(b + 1) + ")") +
-              ": the mesh file '" + mesh_file +
-              "' has no cells with physical tag " + std::to_string(tag) + "."));
+          AssertThrow(cell_tags.count(tag),
+                      ExcMessage((!listed ? "Scene/Gmsh/Body " +
+                                              std::to_string(b + 1) + " tags" :
+                                            "Scene/Gmsh/Bodies (body " +
+                                              std::to_string(b + 1) + ")") +
+                                 ": the mesh file '" + mesh_file +
+                                 "' has no cells with physical tag " +
+                                 std::to_string(tag) + "."));
     }
 
     /**
@@ -511,7 +517,10 @@ namespace dyncontact
                                    "obstacle')."));
             std::array<long, 2> body{{0, 0}};
             double              radius = 0.;
-            bool                valid  = sides.size() == 2 || sides.size() == 3;
+            // (split_string_list drops a last empty item: count the ':')
+            const auto n_sides = std::count(item.begin(), item.end(), ':') + 1;
+            bool       valid   = n_sides == long(sides.size()) &&
+                         (sides.size() == 2 || sides.size() == 3);
             for (unsigned int k = 0; valid && k < 2; ++k)
               {
                 char *end = nullptr;
@@ -589,26 +598,34 @@ namespace dyncontact
         // the rigid obstacle
         const std::string point  = prm.get("Obstacle point");
         const std::string normal = prm.get("Obstacle normal");
-        AssertThrow(
-          (point.empty() && normal.empty()) == obstacle_slaves.empty(),
-          ExcMessage(obstacle_slaves.empty() ?
-                       "Scene/Gmsh/Obstacle point and Obstacle normal are "
-                       "given, but no pair of Scene/Gmsh/Contact pairs "
-                       "names the obstacle ('body : obstacle'): name it, "
-                       "or leave them out." :
-                       "Scene/Gmsh/Contact pairs names the rigid obstacle: "
-                       "give both Scene/Gmsh/Obstacle point and "
-                       "Scene/Gmsh/Obstacle normal."));
+        AssertThrow(!obstacle_slaves.empty() ||
+                      (point.empty() && normal.empty()),
+                    ExcMessage(
+                      "Scene/Gmsh/Obstacle point and Obstacle normal are "
+                      "given, but no pair of Scene/Gmsh/Contact pairs "
+                      "names the obstacle ('body : obstacle'): name it, "
+                      "or leave them out."));
+        AssertThrow(obstacle_slaves.empty() ||
+                      (!point.empty() && !normal.empty()),
+                    ExcMessage(
+                      "Scene/Gmsh/Contact pairs names the rigid obstacle: "
+                      "give both Scene/Gmsh/Obstacle point and "
+                      "Scene/Gmsh/Obstacle normal."));
         if (!obstacle_slaves.empty())
           {
             rigid_obstacle.point =
               Point<dim>(parse_vector<dim>(point, "Obstacle point", 1e15, "m"));
             rigid_obstacle.normal =
               parse_vector<dim>(normal, "Obstacle normal", 1e15, "");
-            const double length = rigid_obstacle.normal.norm();
-            AssertThrow(length > 0. && std::isfinite(length),
+            // (scaled first: the square of a tiny component underflows)
+            double largest = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              largest = std::max(largest, std::abs(rigid_obstacle.normal[d]));
+            AssertThrow(largest > 0.,
                         ExcMessage("Scene/Gmsh/Obstacle normal = '" + normal +
                                    "' must have a length > 0."));
+            rigid_obstacle.normal /= largest;
+            const double length = rigid_obstacle.normal.norm();
             rigid_obstacle.normal /= length;
           }
         // contact tags that no pair uses: bodies that would pass through
@@ -653,7 +670,7 @@ namespace dyncontact
     grid_in.attach_triangulation(tria);
     grid_in.read_msh(in);
 
-    set_bodies(tria, body_tags, mesh_file);
+    set_bodies(tria, body_tags, pairs_listed, mesh_file);
     const auto face_tags =
       boundary_tags(tria, contact_tags, contact_entries, mesh_file);
     require_boundary_tags(face_tags,

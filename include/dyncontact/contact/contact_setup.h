@@ -112,10 +112,13 @@ namespace dyncontact
     /**
      * The slave nodes of two-body pairs that got no constraint row (farther
      * than the search radius from the master surface, or beside it) can
-     * still pass into the other body if the radius was too small: this
-     * finds the deepest such node, by the closest point of its deformed
-     * position x + u(x) on the deformed master surface (at any distance),
-     * inside if it lies behind the master face. Each rank deforms the
+     * still pass into the other body if the radius was too small, and a
+     * node that kept the row of a nearer master (keep_nearest_rows(): the
+     * rows are chosen on the reference configuration) into the farther
+     * master, a body or the rigid obstacle: this finds the deepest such
+     * node, by the closest point of its deformed position x + u(x) on the
+     * deformed master surface (at any distance), inside if it lies behind
+     * the master face, or by its depth in the obstacle. Each rank deforms the
      * master faces of its own cells and sends to every rank only the faces
      * closest to that rank's nodes (closest_faces()). Collective; nothing
      * is done (and no communication happens) when every slave node has a
@@ -130,6 +133,14 @@ namespace dyncontact
     n_global_rows() const
     {
       return n_global_row_count;
+    }
+
+    /// The search radius (m) of pair @p pair (in the order of the
+    /// statistics; 0 for the rigid obstacle, which needs none).
+    double
+    search_radius(const unsigned int pair) const
+    {
+      return pair < search_radii.size() ? search_radii[pair] : 0.;
     }
 
     /// The number of slave nodes without a row, over all ranks.
@@ -232,9 +243,12 @@ namespace dyncontact
     types::global_dof_index    n_global_row_count = 0;
     std::vector<UnmatchedNode> unmatched;
     types::global_dof_index    n_unmatched_nodes = 0;
+    /// The rigid obstacle, if the scene has one.
+    std::optional<RigidObstacle<dim>> obstacle_plane;
     /// Per pair (kept only if a slave node has no row): this rank's faces
     /// of the master surface, and the number of nodes without a row over
-    /// all ranks.
+    /// all ranks (the last entry: the obstacle's, nodes that kept the row
+    /// of a nearer master).
     std::vector<std::vector<MasterFace<dim>>> master_surfaces;
     std::vector<types::global_dof_index>      n_unmatched_in_pair;
     /// Per pair: its search radius (m), and (scenes of several pairs) the
