@@ -33,111 +33,134 @@
 
 using namespace dealii;
 
-namespace {
-constexpr int dim = 2;
-constexpr unsigned int adaptations = 40;
+namespace
+{
+  constexpr int          dim         = 2;
+  constexpr unsigned int adaptations = 40;
 
-/// Flags the cells of the band [a, a + 0.1] for refinement up to level
-/// 2, the others for coarsening.
-template <typename TriangulationType>
-void mark(TriangulationType &triangulation, const double a) {
-  for (const auto &cell : triangulation.active_cell_iterators())
-    if (cell->is_locally_owned()) {
-      const double x = cell->center()[0];
-      const bool band = x > a && x < a + 0.1;
-      if (band && cell->level() < 2)
-        cell->set_refine_flag();
-      else if (!band && cell->level() > 0)
-        cell->set_coarsen_flag();
-    }
-}
-
-struct Cost {
-  double refine = 0., dofs = 0.;
-  unsigned int cells = 0;
-};
-
-Cost serial(const unsigned int nx, const FiniteElement<dim> &fe) {
-  Triangulation<dim> triangulation;
-  GridGenerator::subdivided_hyper_rectangle(triangulation, {nx, nx / 4},
-                                            Point<dim>(), Point<dim>(1., 0.25));
-  DoFHandler<dim> dof_handler(triangulation);
-  dof_handler.distribute_dofs(fe);
-  std::vector<Vector<double>> state(2, Vector<double>(dof_handler.n_dofs()));
-  Cost cost;
-  for (unsigned int k = 0; k < adaptations; ++k) {
-    mark(triangulation, 0.2 + 0.01 * k);
-    Timer refine;
-    SolutionTransfer<dim, Vector<double>> transfer(dof_handler);
-    triangulation.prepare_coarsening_and_refinement();
-    transfer.prepare_for_coarsening_and_refinement(state);
-    triangulation.execute_coarsening_and_refinement();
-    cost.refine += refine.wall_time() / adaptations;
-    Timer dofs;
-    dof_handler.distribute_dofs(fe);
-    std::vector<Vector<double>> result(2, Vector<double>(dof_handler.n_dofs()));
-    transfer.interpolate(state, result);
-    state = result;
-    cost.dofs += dofs.wall_time() / adaptations;
+  /// Flags the cells of the band [a, a + 0.1] for refinement up to level
+  /// 2, the others for coarsening.
+  template <typename TriangulationType>
+  void
+  mark(TriangulationType &triangulation, const double a)
+  {
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double x    = cell->center()[0];
+          const bool   band = x > a && x < a + 0.1;
+          if (band && cell->level() < 2)
+            cell->set_refine_flag();
+          else if (!band && cell->level() > 0)
+            cell->set_coarsen_flag();
+        }
   }
-  cost.cells = triangulation.n_active_cells();
-  return cost;
-}
 
-Cost distributed(const unsigned int nx, const FiniteElement<dim> &fe) {
-  using VectorType = LinearAlgebra::distributed::Vector<double>;
-  parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
-  GridGenerator::subdivided_hyper_rectangle(triangulation, {nx, nx / 4},
-                                            Point<dim>(), Point<dim>(1., 0.25));
-  DoFHandler<dim> dof_handler(triangulation);
-  dof_handler.distribute_dofs(fe);
-  const auto vectors = [&]() {
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    return std::vector<VectorType>(
+  /// The bar mesh of nx x nx/4 cells on [0, 1] x [0, 0.25].
+  void
+  bar_mesh(Triangulation<dim> &triangulation, const unsigned int nx)
+  {
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {nx, nx / 4},
+                                              Point<dim>(),
+                                              Point<dim>(1., 0.25));
+  }
+
+  struct Cost
+  {
+    double       refine = 0., dofs = 0.;
+    unsigned int cells = 0;
+  };
+
+  Cost
+  serial(const unsigned int nx, const FiniteElement<dim> &fe)
+  {
+    Triangulation<dim> triangulation;
+    bar_mesh(triangulation, nx);
+    DoFHandler<dim> dof_handler(triangulation);
+    dof_handler.distribute_dofs(fe);
+    std::vector<Vector<double>> state(2, Vector<double>(dof_handler.n_dofs()));
+    Cost                        cost;
+    for (unsigned int k = 0; k < adaptations; ++k)
+      {
+        mark(triangulation, 0.2 + 0.01 * k);
+        Timer                                 refine;
+        SolutionTransfer<dim, Vector<double>> transfer(dof_handler);
+        triangulation.prepare_coarsening_and_refinement();
+        transfer.prepare_for_coarsening_and_refinement(state);
+        triangulation.execute_coarsening_and_refinement();
+        cost.refine += refine.wall_time() / adaptations;
+        Timer dofs;
+        dof_handler.distribute_dofs(fe);
+        std::vector<Vector<double>> result(
+          2, Vector<double>(dof_handler.n_dofs()));
+        transfer.interpolate(state, result);
+        state = result;
+        cost.dofs += dofs.wall_time() / adaptations;
+      }
+    cost.cells = triangulation.n_active_cells();
+    return cost;
+  }
+
+  Cost
+  distributed(const unsigned int nx, const FiniteElement<dim> &fe)
+  {
+    using VectorType = LinearAlgebra::distributed::Vector<double>;
+    parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
+    bar_mesh(triangulation, nx);
+    DoFHandler<dim> dof_handler(triangulation);
+    dof_handler.distribute_dofs(fe);
+    const auto vectors = [&]() {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      return std::vector<VectorType>(
         2,
         VectorType(dof_handler.locally_owned_dofs(), relevant, MPI_COMM_WORLD));
-  };
-  std::vector<VectorType> state = vectors();
-  Cost cost;
-  for (unsigned int k = 0; k < adaptations; ++k) {
-    mark(triangulation, 0.2 + 0.01 * k);
-    Timer refine;
-    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
-        dof_handler);
-    triangulation.prepare_coarsening_and_refinement();
-    for (auto &v : state)
-      v.update_ghost_values();
-    transfer.prepare_for_coarsening_and_refinement(
-        std::vector<const VectorType *>{&state[0], &state[1]});
-    triangulation.execute_coarsening_and_refinement();
-    cost.refine += refine.wall_time() / adaptations;
-    Timer dofs;
-    dof_handler.distribute_dofs(fe);
-    std::vector<VectorType> result = vectors();
-    std::vector<VectorType *> targets = {&result[0], &result[1]};
-    transfer.interpolate(targets);
-    state = vectors();
-    for (unsigned int i = 0; i < 2; ++i)
-      state[i] = result[i];
-    cost.dofs += dofs.wall_time() / adaptations;
+    };
+    std::vector<VectorType> state = vectors();
+    Cost                    cost;
+    for (unsigned int k = 0; k < adaptations; ++k)
+      {
+        mark(triangulation, 0.2 + 0.01 * k);
+        Timer                                                    refine;
+        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+          dof_handler);
+        triangulation.prepare_coarsening_and_refinement();
+        for (auto &v : state)
+          v.update_ghost_values();
+        transfer.prepare_for_coarsening_and_refinement(
+          std::vector<const VectorType *>{&state[0], &state[1]});
+        triangulation.execute_coarsening_and_refinement();
+        cost.refine += refine.wall_time() / adaptations;
+        Timer dofs;
+        dof_handler.distribute_dofs(fe);
+        std::vector<VectorType>   result  = vectors();
+        std::vector<VectorType *> targets = {&result[0], &result[1]};
+        transfer.interpolate(targets);
+        state = vectors();
+        for (unsigned int i = 0; i < 2; ++i)
+          state[i] = result[i];
+        cost.dofs += dofs.wall_time() / adaptations;
+      }
+    cost.cells = triangulation.n_global_active_cells();
+    return cost;
   }
-  cost.cells = triangulation.n_global_active_cells();
-  return cost;
-}
 } // namespace
 
-int main(int argc, char **argv) {
+int
+main(int argc, char **argv)
+{
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int nx = argc > 1 ? std::atoi(argv[1]) : 128;
-  const unsigned int degree = argc > 2 ? std::atoi(argv[2]) : 1;
-  if (nx < 4 || nx > 4096 || degree < 1 || degree > 4) {
-    std::cerr << "usage: refinement_cost [nx in 4..4096] [p in 1..4]\n";
-    return 1;
-  }
+  const unsigned int               nx     = argc > 1 ? std::atoi(argv[1]) : 128;
+  const unsigned int               degree = argc > 2 ? std::atoi(argv[2]) : 1;
+  if (nx < 4 || nx > 4096 || degree < 1 || degree > 4)
+    {
+      std::cerr << "usage: refinement_cost [nx in 4..4096] [p in 1..4]\n";
+      return 1;
+    }
   const FESystem<dim> fe(FE_Q<dim>(degree), dim);
-  const Cost p4est = distributed(nx, fe);
-  const Cost serial_cost = serial(nx, fe);
+  const Cost          p4est       = distributed(nx, fe);
+  const Cost          serial_cost = serial(nx, fe);
   std::cout << std::setprecision(3) << "2D bar, " << nx << " x " << nx / 4
             << " coarse cells, p = " << degree << ", " << p4est.cells
             << " cells at the end (serial: " << serial_cost.cells

@@ -98,7 +98,11 @@ namespace dyncontact
       AssertThrow(pair.search_radius > 0.,
                   ExcMessage("Contact/Search radius must be > 0 (m) for the "
                              "scene '" +
-                             scene.name() + "': it has no default."));
+                             scene.name() + "': it has no default" +
+                             (scene.name() == "gmsh" ?
+                                " (or give each pair its own: Scene/Gmsh/"
+                                "Contact pairs 'slave : master : radius')." :
+                                std::string("."))));
   }
 
 
@@ -166,14 +170,22 @@ namespace dyncontact
                     mapping,
                     w_ghosted,
                     pcout);
-    if (scene.obstacle() && several_pairs)
-      pcout << "   contact pair " << pairs.size() + 1 << ": slave body "
-            << bodies_on(scene.contact_boundary_ids()) << " ("
-            << n_obstacle_rows << " nodes), master the rigid obstacle"
-            << std::endl;
-
     if (several_pairs)
       keep_nearest_rows();
+    if (scene.obstacle() && several_pairs)
+      {
+        unsigned int n_kept = 0;
+        for (const auto &row : rows.rows)
+          n_kept += (row.pair == pairs.size());
+        n_kept = Utilities::MPI::sum(n_kept, comm);
+        pcout << "   contact pair " << pairs.size() + 1 << ": slave body "
+              << bodies_on(scene.contact_boundary_ids()) << " ("
+              << n_obstacle_rows << " nodes";
+        if (n_kept < n_obstacle_rows)
+          pcout << ", " << n_kept << " with obstacle rows, the others "
+                << "nearer to a master of another pair";
+        pcout << "), master the rigid obstacle" << std::endl;
+      }
 
     // the penetration check of the slave nodes without a row keeps this
     // rank's master faces, but only if there are such nodes
@@ -233,7 +245,8 @@ namespace dyncontact
           // watched against it by unmatched_penetration()
           const ContactRow &row = rows.rows[r];
           UnmatchedNode     node;
-          node.pair = row.pair;
+          node.pair          = row.pair;
+          node.nearer_master = true;
           for (unsigned int d = 0; d < dim; ++d)
             {
               node.x[d]    = row.position[d];
@@ -404,13 +417,17 @@ namespace dyncontact
                                ", ...) to the obstacle is not finite."));
         if (!parameters.project_initial_penetration &&
             row.gap < -1e-12 * (std::abs(row.gap) + 1.) && penetration.empty())
-          penetration = "The initial configuration penetrates the "
-                        "obstacle: the node at (" +
-                        Utilities::to_string(x[0]) + ", " +
-                        Utilities::to_string(x[1]) + ", ...) lies " +
-                        Utilities::to_string(-row.gap) +
-                        " m inside it. Correct the scene, or set "
-                        "'Contact/Initial penetration = project'.";
+          penetration =
+            "The initial configuration penetrates the "
+            "obstacle" +
+            (several_pairs ?
+               " (contact pair " + std::to_string(pair_index + 1) + ")" :
+               std::string()) +
+            ": the node at (" + Utilities::to_string(x[0]) + ", " +
+            Utilities::to_string(x[1]) + ", ...) lies " +
+            Utilities::to_string(-row.gap) +
+            " m inside it. Correct the scene, or set "
+            "'Contact/Initial penetration = project'.";
         add_row(row, node.scalar_dof, w_ghosted, constraints);
       }
     // (every rank stops, also those without such a node)
@@ -613,16 +630,19 @@ namespace dyncontact
               if (image && (y - image->point) * image->master_normal < 0. &&
                   image->gap > deepest.depth)
                 {
-                  deepest.depth    = image->gap;
-                  deepest.position = node.x;
-                  deepest.pair     = pair;
+                  deepest.depth         = image->gap;
+                  deepest.position      = node.x;
+                  deepest.pair          = pair;
+                  deepest.nearer_master = node.nearer_master;
                 }
             }
       }
     // nodes that kept the row of a master nearer than the obstacle
-    if (obstacle_plane && n_unmatched_in_pair[master_surfaces.size()] > 0)
+    // (the obstacle's pair index: the number of two-body pairs)
+    const unsigned int obstacle_pair = search_radii.size();
+    if (obstacle_plane && n_unmatched_in_pair[obstacle_pair] > 0)
       for (const auto &node : unmatched)
-        if (node.pair == master_surfaces.size())
+        if (node.pair == obstacle_pair)
           {
             Point<dim> y = node.x;
             for (unsigned int d = 0; d < dim; ++d)
@@ -632,9 +652,10 @@ namespace dyncontact
             // (round-off of a node on the surface is no penetration)
             if (depth > deepest.depth && depth > 1e-12 * (1. + y.norm()))
               {
-                deepest.depth    = depth;
-                deepest.position = node.x;
-                deepest.pair     = node.pair;
+                deepest.depth         = depth;
+                deepest.position      = node.x;
+                deepest.pair          = node.pair;
+                deepest.nearer_master = node.nearer_master;
               }
           }
     // the deepest over all ranks (the first rank among equals), with its
@@ -646,15 +667,20 @@ namespace dyncontact
                             my_rank :
                             Utilities::MPI::n_mpi_processes(comm),
                           comm);
-    std::vector<double> position(dim + 1, 0.);
-    for (unsigned int d = 0; d < dim; ++d)
-      position[d] = (owner == my_rank) ? deepest.position[d] : 0.;
-    position[dim] = (owner == my_rank) ? deepest.pair : 0.;
+    std::vector<double> position(dim + 2, 0.);
+    if (owner == my_rank)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          position[d] = deepest.position[d];
+        position[dim]     = deepest.pair;
+        position[dim + 1] = deepest.nearer_master ? 1. : 0.;
+      }
     Utilities::MPI::sum(position, comm, position);
     deepest.depth = depth;
     for (unsigned int d = 0; d < dim; ++d)
       deepest.position[d] = position[d];
-    deepest.pair = std::lround(position[dim]);
+    deepest.pair          = std::lround(position[dim]);
+    deepest.nearer_master = position[dim + 1] > 0.5;
     return deepest;
   }
 
@@ -670,29 +696,39 @@ namespace dyncontact
     std::ostringstream where;
     for (unsigned int d = 0; d < dim; ++d)
       where << (d > 0 ? ", " : "") << deepest.position[d];
+    const std::string pair = std::to_string(deepest.pair + 1);
+    // (at t = 0 every slave node of the obstacle got a row, which refused
+    // it inside: only a node that kept another pair's row and was not
+    // projected, Initial penetration = project, can be)
     AssertThrow(deepest.pair < search_radii.size() ||
                   deepest.depth <= 1e-12 * (deepest.depth + 1.),
-                ExcMessage("The bodies overlap at t = 0: the slave node at (" +
-                           where.str() + ") lies " +
-                           Utilities::to_string(deepest.depth) +
-                           " m inside the rigid obstacle (contact pair " +
-                           std::to_string(deepest.pair + 1) +
-                           "), and kept the row of a nearer master. Correct "
-                           "the mesh or the initial displacement."));
+                ExcMessage("A body lies inside the rigid obstacle at t = 0 "
+                           "(contact pair " +
+                           pair + "): the slave node at (" + where.str() +
+                           ") lies " + Utilities::to_string(deepest.depth) +
+                           " m inside it, and kept the row of a master of "
+                           "another pair, nearer in the reference "
+                           "configuration, so that 'Contact/Initial "
+                           "penetration = project' did not move it out. "
+                           "Correct the mesh or the initial displacement."));
     AssertThrow(deepest.pair >= search_radii.size() ||
                   deepest.depth <= 1e-10 * search_radius(deepest.pair),
-                ExcMessage("The bodies overlap at t = 0 (contact pair " +
-                           std::to_string(deepest.pair + 1) +
-                           "): the slave node at (" + where.str() + ") lies " +
-                           Utilities::to_string(deepest.depth) +
-                           " m inside the other body, farther than the "
-                           "pair's search radius (" +
-                           Utilities::to_string(search_radius(deepest.pair)) +
-                           " m: Contact/Search radius, or the pair's own) "
-                           "from the master surface, or nearer to a master "
-                           "of another pair, so that it got no row of this "
-                           "pair that could reject or project it. Correct "
-                           "the mesh or the initial displacement."));
+                ExcMessage(
+                  "The bodies overlap at t = 0 (contact pair " + pair +
+                  "): the slave node at (" + where.str() + ") lies " +
+                  Utilities::to_string(deepest.depth) +
+                  " m inside the other body, " +
+                  (deepest.nearer_master ?
+                     std::string("and kept the row of a master of another "
+                                 "pair, nearer in the reference "
+                                 "configuration, so that no row of this "
+                                 "pair could reject or project it.") :
+                     "farther than the pair's search radius (" +
+                       Utilities::to_string(search_radius(deepest.pair)) +
+                       " m: Contact/Search radius, or the pair's own) from "
+                       "the master surface, so that it got no row that "
+                       "could reject or project it.") +
+                  " Correct the mesh or the initial displacement."));
   }
 
 

@@ -174,23 +174,21 @@ namespace dyncontact
                   n_pairs + (this->get_scene().obstacle() ? 1 : 0) > 1 ?
                     " of contact pair " + std::to_string(unmatched.pair + 1) :
                     std::string();
-                if (unmatched.pair >= n_pairs)
-                  out << ") has no constraint row" << pair << " and lies "
-                      << unmatched.depth
-                      << " m inside the rigid obstacle: it kept the row of "
-                         "a master that is nearer in the reference "
-                         "configuration, where the rows are chosen (the "
-                         "linearised contact assumes small displacements).";
+                out << ") has no constraint row" << pair << " and lies "
+                    << unmatched.depth << " m inside "
+                    << (unmatched.pair >= n_pairs ? "the rigid obstacle" :
+                                                    "the other body");
+                if (unmatched.nearer_master)
+                  out << ": it kept the row of a master of another pair, "
+                         "nearer in the reference configuration, where the "
+                         "rows are chosen (the linearised contact assumes "
+                         "small displacements).";
                 else
-                  out << ") has no constraint row" << pair << " and lies "
-                      << unmatched.depth
-                      << " m inside the other body: it was farther than "
-                         "the pair's search radius ("
+                  out << ": it was farther than the pair's search radius ("
                       << contact.search_radius(unmatched.pair)
                       << " m, 'Contact/Search radius' or the pair's own) "
-                         "from the master surface, or nearer to a master of "
-                         "another pair, when the rows were built. Increase "
-                         "the search radius.";
+                         "from the master surface when the rows were built. "
+                         "Increase the search radius.";
                 out << (n_warnings == 3 ? " (Further such warnings are not "
                                           "printed; see the column "
                                           "max_penetration.)" :

@@ -509,7 +509,7 @@ namespace dyncontact
         for (const std::string &item : Utilities::split_string_list(list, ','))
           {
             const auto sides = Utilities::split_string_list(item, ':');
-            AssertThrow(sides.empty() || sides[0] != "obstacle",
+            AssertThrow(sides.size() < 2 || sides[0] != "obstacle",
                         ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
                                    item +
                                    "' makes the rigid obstacle the slave; it "
@@ -601,7 +601,7 @@ namespace dyncontact
         AssertThrow(!obstacle_slaves.empty() ||
                       (point.empty() && normal.empty()),
                     ExcMessage(
-                      "Scene/Gmsh/Obstacle point and Obstacle normal are "
+                      "Scene/Gmsh/Obstacle point or Obstacle normal is "
                       "given, but no pair of Scene/Gmsh/Contact pairs "
                       "names the obstacle ('body : obstacle'): name it, "
                       "or leave them out."));

@@ -58,7 +58,8 @@ namespace dyncontact
     void
     check(const Scene<dim> &scene) const;
 
-    /// The scene's contact pairs with the prm's slave side and radius.
+    /// The scene's contact pairs with the prm's slave side and radius (a
+    /// pair with its own radius keeps it).
     std::vector<ContactPair>
     contact_pairs(const Scene<dim> &scene) const;
 
@@ -107,6 +108,9 @@ namespace dyncontact
       double       depth = 0.; ///< in m; 0 if none penetrates
       Point<dim>   position;   ///< reference position of that slave node
       unsigned int pair = 0;   ///< its contact pair
+      /// Whether the node has a row of another pair, of a master nearer in
+      /// the reference configuration (else it is beyond the search radius).
+      bool nearer_master = false;
     };
 
     /**
@@ -122,7 +126,7 @@ namespace dyncontact
      * master faces of its own cells and sends to every rank only the faces
      * closest to that rank's nodes (closest_faces()). Collective; nothing
      * is done (and no communication happens) when every slave node has a
-     * row.
+     * row in every pair it belongs to.
      */
     Penetration
     unmatched_penetration(const VectorType &u) const;
@@ -143,7 +147,9 @@ namespace dyncontact
       return pair < search_radii.size() ? search_radii[pair] : 0.;
     }
 
-    /// The number of slave nodes without a row, over all ranks.
+    /// The number of watched slave nodes (see unmatched_penetration(): a
+    /// node without a row of a pair, counted once per pair), over all
+    /// ranks.
     types::global_dof_index
     n_unmatched() const
     {
@@ -192,9 +198,10 @@ namespace dyncontact
                       const AffineConstraints<double> &constraints);
 
     /// Stops with a message naming the pair if a slave node without a row
-    /// lies inside the other body in the initial state @p u (the bodies
-    /// overlap at t = 0; a node with a row is refused or projected by
-    /// setup() and project_initial_penetration()). Collective.
+    /// of a pair lies inside that pair's master, the other body or the
+    /// rigid obstacle, in the initial state @p u (they overlap at t = 0; a
+    /// node with a row is refused or projected by setup() and
+    /// project_initial_penetration()). Collective.
   public:
     void
     refuse_initial_overlap(const VectorType &u) const;
@@ -235,6 +242,8 @@ namespace dyncontact
       Point<dim>                               x;
       std::array<types::global_dof_index, dim> dofs;
       unsigned int                             pair;
+      /// Whether it kept the row of a nearer master of another pair.
+      bool nearer_master = false;
     };
 
     const Parameters           parameters;

@@ -19,9 +19,9 @@ namespace dyncontact
    * 'Bodies', with 'Contact tags', 'Initial velocities' and a list of
    * 'Contact pairs' (slave : master, body numbers, a master can be the
    * rigid obstacle, a half-space; a pair can have its own search radius).
-   * The mesh is checked
-   * against the prm: every cell must belong to a body, every tag named in
-   * the prm must exist in the mesh, otherwise the run stops with a message.
+   * The mesh is checked against the prm: every cell must belong to a body,
+   * every tag named in the prm must exist in the mesh, otherwise the run
+   * stops with a message.
    */
   template <int dim>
   class GmshScene : public Scene<dim>
