@@ -130,23 +130,18 @@ namespace dyncontact
     several_pairs = pairs.size() + (scene.obstacle() ? 1 : 0) > 1;
     // the bodies of the contact boundary ids @p ids, as "1+3", for the
     // banner
-    std::vector<bool> on_id;
+    std::vector<std::set<types::boundary_id>> ids_of_bodies;
     const auto bodies_on = [&](const std::vector<types::boundary_id> &ids) {
       std::string bodies;
-      for (unsigned int b = 0; b < scene.n_bodies(); ++b)
-        {
-          bool on = false;
-          for (const auto id : ids)
-            on = on || on_id[id % 256 * scene.n_bodies() + b];
-          if (on)
-            bodies += (bodies.empty() ? "" : "+") + std::to_string(b + 1);
-        }
+      for (unsigned int b = 0; b < ids_of_bodies.size(); ++b)
+        if (has_any_of(ids_of_bodies[b], ids))
+          bodies += (bodies.empty() ? "" : "+") + std::to_string(b + 1);
       return bodies;
     };
     if (several_pairs)
       {
-        on_id =
-          bodies_of_boundary_ids(system.get_dof_handler().get_triangulation(),
+        ids_of_bodies =
+          boundary_ids_of_bodies(system.get_dof_handler().get_triangulation(),
                                  scene.n_bodies());
         for (const ContactPair &pair : pairs)
           side_bodies.push_back(

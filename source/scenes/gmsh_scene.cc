@@ -79,6 +79,21 @@ namespace dyncontact
       return result;
     }
 
+    /// The items of @p text between the @p separator, trimmed, empty ones
+    /// kept (Utilities::split_string_list drops a last empty item); none
+    /// for an empty text.
+    std::vector<std::string>
+    split_items(const std::string &text, const char separator)
+    {
+      std::vector<std::string> items;
+      std::string              item;
+      for (std::istringstream in(text); std::getline(in, item, separator);)
+        items.push_back(Utilities::trim(item));
+      if (!text.empty() && text.back() == separator)
+        items.emplace_back();
+      return items;
+    }
+
     std::string
     to_list(const std::set<unsigned int> &tags)
     {
@@ -471,13 +486,7 @@ namespace dyncontact
           const std::string text = prm.get(entry);
           if (text.empty())
             return std::vector<std::string>(n);
-          std::vector<std::string> items;
-          // (split_string_list drops a last empty item)
-          std::string item;
-          for (std::istringstream in(text); std::getline(in, item, ';');)
-            items.push_back(Utilities::trim(item));
-          if (!text.empty() && text.back() == ';')
-            items.emplace_back();
+          const std::vector<std::string> items = split_items(text, ';');
           AssertThrow(items.size() == n,
                       ExcMessage("Scene/Gmsh/" + entry + " = '" + text +
                                  "' has " + std::to_string(items.size()) +
@@ -508,7 +517,7 @@ namespace dyncontact
         const std::string list = prm.get("Contact pairs");
         for (const std::string &item : Utilities::split_string_list(list, ','))
           {
-            const auto sides = Utilities::split_string_list(item, ':');
+            const auto sides = split_items(item, ':');
             AssertThrow(sides.size() < 2 || sides[0] != "obstacle",
                         ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
                                    item +
@@ -517,10 +526,7 @@ namespace dyncontact
                                    "obstacle')."));
             std::array<long, 2> body{{0, 0}};
             double              radius = 0.;
-            // (split_string_list drops a last empty item: count the ':')
-            const auto n_sides = std::count(item.begin(), item.end(), ':') + 1;
-            bool       valid   = n_sides == long(sides.size()) &&
-                         (sides.size() == 2 || sides.size() == 3);
+            bool                valid  = sides.size() == 2 || sides.size() == 3;
             for (unsigned int k = 0; valid && k < 2; ++k)
               {
                 char *end = nullptr;

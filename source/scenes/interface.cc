@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
@@ -220,29 +221,37 @@ namespace dyncontact
   }
 
   template <int dim>
-  std::vector<bool>
-  bodies_of_boundary_ids(const Triangulation<dim, dim> &triangulation,
+  std::vector<std::set<types::boundary_id>>
+  boundary_ids_of_bodies(const Triangulation<dim, dim> &triangulation,
                          const unsigned int             n_bodies)
   {
-    std::vector<double> on_id(256 * n_bodies, 0.);
+    // (id, body) as one key id * n_bodies + body, for the union over all
+    // ranks
+    std::set<unsigned long long> keys;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
-            on_id[cell->face(f)->boundary_id() % 256 * n_bodies +
-                  cell->material_id()] = 1.;
-    Utilities::MPI::max(on_id, triangulation.get_communicator(), on_id);
-    return std::vector<bool>(on_id.begin(), on_id.end());
+            keys.insert(
+              static_cast<unsigned long long>(cell->face(f)->boundary_id()) *
+                n_bodies +
+              cell->material_id());
+    std::vector<std::set<types::boundary_id>> ids(n_bodies);
+    for (const unsigned long long key :
+         Utilities::MPI::compute_set_union(keys,
+                                           triangulation.get_communicator()))
+      ids[key % n_bodies].insert(key / n_bodies);
+    return ids;
   }
 
 
 
   template class Scene<2>;
   template class Scene<3>;
-  template std::vector<bool>
-  bodies_of_boundary_ids<2>(const Triangulation<2, 2> &, const unsigned int);
-  template std::vector<bool>
-  bodies_of_boundary_ids<3>(const Triangulation<3, 3> &, const unsigned int);
+  template std::vector<std::set<types::boundary_id>>
+  boundary_ids_of_bodies<2>(const Triangulation<2, 2> &, const unsigned int);
+  template std::vector<std::set<types::boundary_id>>
+  boundary_ids_of_bodies<3>(const Triangulation<3, 3> &, const unsigned int);
   template void
   build_mesh<2>(const Scene<2> &,
                 Triangulation<2, 2> &,

@@ -154,18 +154,12 @@ namespace dyncontact
         contacts.push_back(pair.second_side);
       }
     contacts.push_back(scene.contact_boundary_ids());
-    const std::vector<bool> on_id =
-      bodies_of_boundary_ids(triangulation, scene.n_bodies());
+    const auto ids = boundary_ids_of_bodies(triangulation, scene.n_bodies());
     for (unsigned int b = 0; b < unheld.size(); ++b)
       {
         unsigned int n_surfaces = 0;
         for (const auto &surface : contacts)
-          {
-            bool touches = false;
-            for (const auto id : surface)
-              touches = touches || on_id[id % 256 * scene.n_bodies() + b];
-            n_surfaces += touches;
-          }
+          n_surfaces += has_any_of(ids[b], surface);
         if (unheld[b] == 1 && n_surfaces >= 2)
           unheld[b] = 0;
       }

@@ -8,9 +8,11 @@
 #include <dyncontact/base/plugins.h>
 #include <dyncontact/scenes/material.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -330,14 +332,24 @@ namespace dyncontact
              const bool               coarse_only);
 
   /**
-   * Which bodies have boundary faces with which boundary id, over all
-   * ranks: entry id * n_bodies + body is true if body has faces with that
-   * id. Collective.
+   * The boundary ids of each body's boundary faces, over all ranks.
+   * Collective.
    */
   template <int dim>
-  std::vector<bool>
-  bodies_of_boundary_ids(const Triangulation<dim, dim> &triangulation,
+  std::vector<std::set<types::boundary_id>>
+  boundary_ids_of_bodies(const Triangulation<dim, dim> &triangulation,
                          const unsigned int             n_bodies);
+
+  /// Whether @p ids_of_body (a body's entry of boundary_ids_of_bodies())
+  /// holds any of @p ids.
+  inline bool
+  has_any_of(const std::set<types::boundary_id>    &ids_of_body,
+             const std::vector<types::boundary_id> &ids)
+  {
+    return std::any_of(ids.begin(), ids.end(), [&](const auto id) {
+      return ids_of_body.count(id) > 0;
+    });
+  }
 
   /**
    * Builds one coarse mesh from several coarse meshes (the bodies) without
