@@ -6,14 +6,17 @@ tau = h_min / (2 p c)) in 2D and 3D for p = 1, 2, 3 with each velocity
 criterion, Kelly's and the gradient recovery, and the recovery again with
 'Contact solver/Step matrix = matrix-free' (criterion 'recovery mf'; the
 same meshes as the recovery's, whose indicators do not see round-off),
-and prints from summary.txt's
+both again with 'Mesh/Triangulation = serial' (criteria 'recovery serial'
+and 'recovery mf serial': deal.II's serial Triangulation instead of
+p4est's, the same meshes), and prints from summary.txt's
 TimerOutput sections the milliseconds per step and per adaptation that
 changes the mesh (n of them: the calls of 'adaptation: constraints
 restored'), split into its parts:
   indicators  'adaptation: indicators and flags', per call (every
               adaptation computes them, also one that then marks no cell
               and stops there)
-  refine      'adaptation: refinement and transfer' (p4est, u and udot)
+  refine      'adaptation: refinement and transfer' (p4est or the serial
+              triangulation, u and udot)
   dofs        'adaptation: DoFs and sparsity'
   assembly    'adaptation: assembly' and 'adaptation: contact rows'
   S           'adaptation: step matrix and preconditioner'
@@ -28,11 +31,13 @@ multigrid' (criterion 'recovery mg'), the preconditioner for large tau.
 Then issue 31's bar to T = 2.5 s (2D, p = 1, 32 cells along, levels 0 to 2,
 tau = 1/256) with each criterion against the uniform mesh of its finest
 level: the energy-norm error at T, the mean DoFs and the time loop's wall
-time (summary.txt) without the sampled error norms.
+time (summary.txt) without the sampled error norms, also with the serial
+triangulation. --only LABELS runs the criteria of the comma-separated
+labels only (e.g. 'recovery mf,recovery mf serial').
 One rank, Release build.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/adaptation_cost.py [build/dyncontact]
-                                  [--tau-ratio R]"""
+                                  [--tau-ratio R] [--only LABELS]"""
 import csv
 import os
 import re
@@ -43,6 +48,7 @@ from options import take_option
 
 arguments = sys.argv[1:]
 tau_ratio = take_option(arguments, "--tau-ratio", float)
+only = take_option(arguments, "--only")
 executable = arguments[0] if arguments else "build/dyncontact"
 folder = "results-adaptation-cost"
 os.makedirs(folder, exist_ok=True)
@@ -50,16 +56,30 @@ os.makedirs(folder, exist_ok=True)
 # (dimension, degree, coarse cells along the length, end time)
 cases = [(2, 1, 128, 0.15), (2, 2, 64, 0.15), (2, 3, 32, 0.15),
          (3, 1, 32, 0.125), (3, 2, 16, 0.125)]
-# (label, criterion, step matrix, preconditioner)
-criteria = [("kelly", "kelly velocity", "assembled", "automatic"),
-            ("recovery", "recovery velocity", "assembled", "automatic"),
-            ("recovery mf", "recovery velocity", "matrix-free", "automatic")]
+# (label, criterion, step matrix, preconditioner, triangulation)
+criteria = [("kelly", "kelly velocity", "assembled", "automatic",
+             "distributed"),
+            ("recovery", "recovery velocity", "assembled", "automatic",
+             "distributed"),
+            ("recovery mf", "recovery velocity", "matrix-free", "automatic",
+             "distributed"),
+            ("recovery serial", "recovery velocity", "assembled",
+             "automatic", "serial"),
+            ("recovery mf serial", "recovery velocity", "matrix-free",
+             "automatic", "serial")]
 if tau_ratio:
     # (3D p = 1 at large tau: 2.4e5 DoFs, about 6 s per step assembled and
     # more matrix-free, half an hour for the two runs: left out)
     cases = [case for case in cases if case[:2] != (3, 1)]
-    criteria = criteria[1:] + [("recovery mg", "recovery velocity",
-                                "matrix-free", "multigrid")]
+    criteria = criteria[1:3] + [("recovery mg", "recovery velocity",
+                                 "matrix-free", "multigrid", "distributed")]
+if only:
+    labels = only.split(",")
+    unknown = [l for l in labels if l not in [c[0] for c in criteria]]
+    if unknown:
+        sys.exit("--only: no criterion labelled %s; the labels are %s"
+                 % (", ".join(unknown), ", ".join(c[0] for c in criteria)))
+    criteria = [c for c in criteria if c[0] in labels]
 parts = [("indicators", ["adaptation: indicators and flags"]),
          ("refine", ["adaptation: refinement and transfer"]),
          ("dofs", ["adaptation: DoFs and sparsity"]),
@@ -69,7 +89,8 @@ parts = [("indicators", ["adaptation: indicators and flags"]),
 
 
 def run(name, dim, degree, cells, end, criterion, tau=None, levels=2,
-        step_matrix="assembled", preconditioner="automatic"):
+        step_matrix="assembled", preconditioner="automatic",
+        triangulation="distributed"):
     h_min = 1.0 / (cells * 2 ** levels)
     if not tau:
         tau = (tau_ratio or 0.5) * h_min / degree
@@ -104,6 +125,9 @@ end
 subsection Contact solver
   set Step matrix = %s%s
 end
+subsection Mesh
+  set Triangulation = %s
+end
 subsection Output
   set Output interval = 0.5
   set Write vtu = false
@@ -111,7 +135,7 @@ end
 """ % (dim, degree, os.path.join(folder, name), cells, tau, end,
        step_matrix,
        "\n  set Preconditioner = " + preconditioner
-       if preconditioner != "automatic" else ""))
+       if preconditioner != "automatic" else "", triangulation))
         if criterion:
             f.write("""subsection Mesh refinement
   set Refinement interval = 2
@@ -141,7 +165,8 @@ print("| dim | p | criterion | mean DoFs | adaptations changing the mesh "
       "| adaptation (ms) | in steps |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for dim, degree, cells, end in cases:
-    for label, criterion, step_matrix, preconditioner in criteria:
+    for label, criterion, step_matrix, preconditioner, triangulation in \
+            criteria:
         if preconditioner == "multigrid" and degree < 2:
             continue
         if tau_ratio and dim == 3 and step_matrix == "assembled":
@@ -150,7 +175,8 @@ for dim, degree, cells, end in cases:
                                  "_tau%g" % tau_ratio if tau_ratio else "")
         sections, dofs, _ = run(name, dim, degree, cells, end, criterion,
                                 step_matrix=step_matrix,
-                                preconditioner=preconditioner)
+                                preconditioner=preconditioner,
+                                triangulation=triangulation)
         time, calls = sections["time step"]
         step = time / calls
         attempts = sections["adaptation: indicators and flags"][1]
@@ -167,19 +193,23 @@ for dim, degree, cells, end in cases:
                  total / step))
         sys.stdout.flush()
 
-if tau_ratio:
+if tau_ratio or only:
     sys.exit(0)
 print()
 print("| bar to T = 2.5 s | error at T | mean DoFs | time loop without "
       "sampled norms (s) |")
 print("|---|---|---|---|")
-for name, label, cells, criterion, levels in [
-        ("uniform", "uniform, 128 cells along", 128, "", 0),
-        ("kelly", "adaptive, kelly velocity", 32, "kelly velocity", 2),
+for name, label, cells, criterion, levels, triangulation in [
+        ("uniform", "uniform, 128 cells along", 128, "", 0, "distributed"),
+        ("kelly", "adaptive, kelly velocity", 32, "kelly velocity", 2,
+         "distributed"),
         ("recovery", "adaptive, recovery velocity", 32, "recovery velocity",
-         2)]:
+         2, "distributed"),
+        ("recovery_serial", "adaptive, recovery velocity, serial", 32,
+         "recovery velocity", 2, "serial")]:
     sections, dofs, error = run("bar_" + name, 2, 1, cells, 2.5, criterion,
-                                tau=1.0 / 256, levels=levels)
+                                tau=1.0 / 256, levels=levels,
+                                triangulation=triangulation)
     loop = sections["time loop"][0] - sections.get("sampled norms", (0, 0))[0]
     print("| %s | %.4f | %.0f | %.2f |" % (label, error, dofs, loop))
     sys.stdout.flush()

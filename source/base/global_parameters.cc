@@ -29,6 +29,17 @@ namespace dyncontact
                       Patterns::Integer(0, 12),
                       "Number of global refinements of the scene's coarse "
                       "mesh, 0 to 12.");
+    prm.declare_entry(
+      "Triangulation",
+      "distributed",
+      Patterns::Selection("distributed|serial"),
+      "Which triangulation holds the mesh. 'distributed': p4est's "
+      "(parallel::distributed::Triangulation), on any number of MPI ranks. "
+      "'serial': deal.II's Triangulation, on one rank only; an adaptive "
+      "mesh refines and coarsens in about a fifth of p4est's time there "
+      "(doc/results.md, 'Cost of a mesh adaptation'), to the same meshes "
+      "and results to round-off. Its checkpoints resume with 'serial' on "
+      "one rank.");
     prm.leave_subsection();
   }
 
@@ -43,7 +54,8 @@ namespace dyncontact
     AssertThrow(!output_directory.empty(),
                 ExcMessage("Output directory must not be empty."));
     prm.enter_subsection("Mesh");
-    initial_refinements = prm.get_integer("Initial global refinements");
+    initial_refinements  = prm.get_integer("Initial global refinements");
+    serial_triangulation = prm.get("Triangulation") == "serial";
     prm.leave_subsection();
   }
 } // namespace dyncontact

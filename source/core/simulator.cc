@@ -54,7 +54,8 @@ namespace dyncontact
       system,
       time_step_controller,
       pcout,
-      comm);
+      comm,
+      parameters.serial_triangulation);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
     vtu_writer = std::make_unique<VtuWriter<dim>>();
@@ -153,7 +154,8 @@ namespace dyncontact
     const auto        state = checkpoints.read_state(dir);
     postprocessors->load(state);
     DiscreteProblem<dim> &p = *problem;
-    p.triangulation.load(Checkpoints::mesh_file(dir));
+    SemiDiscreteSystem<dim>::load_mesh(Checkpoints::mesh_file(dir),
+                                       p.triangulation);
     p.get_contact().load(state);
     p.setup(*scene, *timer);
     if (state.count("contact_slave_sides") == 0)
@@ -166,7 +168,7 @@ namespace dyncontact
     std::vector<VectorType *> vectors = {&p.u, &p.udot, &flags};
     for (VectorType &v : controller_vectors)
       vectors.push_back(&v);
-    p.get_system().deserialize(vectors);
+    p.get_system().load_vectors(Checkpoints::mesh_file(dir), vectors);
     control.load(state);
     time_step_controller.load(state,
                               p.get_contact().get_rows(),
@@ -239,8 +241,7 @@ namespace dyncontact
     std::vector<const VectorType *> vectors = {&p.u, &p.udot, &flags};
     for (const VectorType &v : controller_vectors)
       vectors.push_back(&v);
-    p.get_system().prepare_for_serialization(vectors);
-    p.triangulation.save(Checkpoints::mesh_file(dir));
+    p.get_system().save(Checkpoints::mesh_file(dir), vectors);
     control.save(state);
     postprocessors->save(state);
     mesh_transfer.save(state);

@@ -54,7 +54,7 @@ namespace dyncontact
   }
 
   template <int dim>
-  const parallel::distributed::Triangulation<dim> &
+  const Triangulation<dim> &
   SimulatorAccess<dim>::get_triangulation() const
   {
     return simulator->problem->triangulation;

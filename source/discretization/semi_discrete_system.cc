@@ -9,6 +9,7 @@
 
 #include <dyncontact/discretization/rigid_motions.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/discretization/serial_mesh_file.h>
 
 #include <Epetra_CrsGraph.h>
 #include <Epetra_CrsMatrix.h>
@@ -44,20 +45,23 @@ namespace dyncontact
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::setup(
-    const parallel::distributed::Triangulation<dim> &triangulation,
-    const Scene<dim>                                &scene)
+  SemiDiscreteSystem<dim>::setup(const Triangulation<dim> &triangulation,
+                                 const Scene<dim>         &scene)
   {
     // deal.II's cells must be p4est's leaves: where they are not (seen with
     // deal.II 9.4 on a coarse mesh with rotated faces: deal.II kept eight
     // children where p4est had coarsened them), every transfer of u, udot or
     // a checkpoint pairs data with the wrong cells. Stop instead.
+    const auto *distributed =
+      dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+        &triangulation);
     AssertThrow(
-      Utilities::MPI::logical_or(
-        triangulation.n_locally_owned_active_cells() !=
-          static_cast<unsigned int>(
-            triangulation.get_p4est()->local_num_quadrants),
-        comm) == false,
+      distributed == nullptr ||
+        Utilities::MPI::logical_or(
+          distributed->n_locally_owned_active_cells() !=
+            static_cast<unsigned int>(
+              distributed->get_p4est()->local_num_quadrants),
+          comm) == false,
       ExcMessage(
         "the refined mesh is not the one p4est holds (deal.II and p4est "
         "disagree on the refinement, as deal.II 9.4 did on coarse meshes "
@@ -437,9 +441,24 @@ namespace dyncontact
         transferred[i] = *vectors[i];
         ghosted.push_back(&transferred[i]);
       }
-    transfer = std::make_unique<
-      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
+    if (is_serial())
+      serial_transfer =
+        std::make_unique<dealii::SolutionTransfer<dim, VectorType>>(
+          dof_handler);
+    else
+      transfer = std::make_unique<
+        parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
     return ghosted;
+  }
+
+
+
+  template <int dim>
+  bool
+  SemiDiscreteSystem<dim>::is_serial() const
+  {
+    return dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+             &dof_handler.get_triangulation()) == nullptr;
   }
 
 
@@ -450,7 +469,10 @@ namespace dyncontact
                                                   const VectorType &udot)
   {
     const auto vectors = start_transfer({&u, &udot});
-    transfer->prepare_for_coarsening_and_refinement(vectors);
+    if (serial_transfer)
+      serial_transfer->prepare_for_coarsening_and_refinement(transferred);
+    else
+      transfer->prepare_for_coarsening_and_refinement(vectors);
   }
 
 
@@ -462,9 +484,22 @@ namespace dyncontact
   {
     reinit_vector(u);
     reinit_vector(udot);
-    std::vector<VectorType *> out = {&u, &udot};
-    transfer->interpolate(out);
-    transfer.reset();
+    if (serial_transfer)
+      {
+        std::vector<VectorType> out(2, u);
+        serial_transfer->interpolate(transferred, out);
+        serial_transfer.reset();
+        for (VectorType &v : out)
+          v.compress(VectorOperation::insert);
+        u    = out[0];
+        udot = out[1];
+      }
+    else
+      {
+        std::vector<VectorType *> out = {&u, &udot};
+        transfer->interpolate(out);
+        transfer.reset();
+      }
     transferred.clear();
     constraints.distribute(u);
     constraints.distribute(udot);
@@ -474,25 +509,55 @@ namespace dyncontact
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::prepare_for_serialization(
-    const std::vector<const VectorType *> &vectors)
+  SemiDiscreteSystem<dim>::save(const std::string                     &file,
+                                const std::vector<const VectorType *> &vectors)
   {
-    const auto ghosted = start_transfer(vectors);
-    transfer->prepare_for_serialization(ghosted);
+    if (is_serial())
+      SerialMeshFile::write(file, dof_handler, vectors);
+    else
+      {
+        const auto ghosted = start_transfer(vectors);
+        transfer->prepare_for_serialization(ghosted);
+        dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
+          dof_handler.get_triangulation())
+          .save(file);
+      }
   }
 
 
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::deserialize(const std::vector<VectorType *> &vectors)
+  SemiDiscreteSystem<dim>::load_mesh(const std::string  &file,
+                                     Triangulation<dim> &triangulation)
+  {
+    if (auto *distributed =
+          dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+            &triangulation))
+      distributed->load(file);
+    else
+      SerialMeshFile::read_refinement(file, triangulation);
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::load_vectors(
+    const std::string               &file,
+    const std::vector<VectorType *> &vectors)
   {
     for (VectorType *v : vectors)
       reinit_vector(*v);
-    parallel::distributed::SolutionTransfer<dim, VectorType> loader(
-      dof_handler);
-    std::vector<VectorType *> out = vectors;
-    loader.deserialize(out);
+    if (is_serial())
+      SerialMeshFile::read_vectors(file, dof_handler, vectors);
+    else
+      {
+        parallel::distributed::SolutionTransfer<dim, VectorType> loader(
+          dof_handler);
+        std::vector<VectorType *> out = vectors;
+        loader.deserialize(out);
+      }
   }
 
 

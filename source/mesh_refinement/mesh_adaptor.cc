@@ -1,6 +1,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <boost/serialization/utility.hpp>
@@ -196,9 +198,9 @@ namespace dyncontact
      */
     template <int dim>
     std::pair<double, double>
-    widen_refinement(parallel::distributed::Triangulation<dim> &triangulation,
-                     const double                               distance,
-                     const unsigned int                         max_level)
+    widen_refinement(Triangulation<dim> &triangulation,
+                     const double        distance,
+                     const unsigned int  max_level)
     {
       using Cell   = typename Triangulation<dim>::active_cell_iterator;
       using Origin = std::pair<Point<dim>, double>; // centre, half size
@@ -316,14 +318,69 @@ namespace dyncontact
         extent += Utilities::fixed_power<2>(bounds[d] + bounds[dim + d]);
       return {spread, std::sqrt(extent)};
     }
+
+
+    /**
+     * Flags the top @p refine_fraction and the bottom @p coarsen_fraction of
+     * the cells of @p triangulation by @p indicators: on p4est's
+     * triangulation with deal.II's function for it, on the serial one with
+     * the same thresholds (deal.II's bisection between the smallest and the
+     * largest indicator), so that both mark the same cells.
+     */
+    template <int dim>
+    void
+    refine_and_coarsen_fixed_number(Triangulation<dim>  &triangulation,
+                                    const Vector<float> &indicators,
+                                    const double         refine_fraction,
+                                    const double         coarsen_fraction)
+    {
+      if (auto *distributed =
+            dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+              &triangulation))
+        {
+          parallel::distributed::GridRefinement::
+            refine_and_coarsen_fixed_number(*distributed,
+                                            indicators,
+                                            refine_fraction,
+                                            coarsen_fraction);
+          return;
+        }
+      namespace Thresholds = internal::parallel::distributed::GridRefinement;
+      const auto                      n_cells = triangulation.n_active_cells();
+      const std::pair<double, double> fractions =
+        GridRefinement::adjust_refine_and_coarsen_number_fraction<dim>(
+          n_cells,
+          std::numeric_limits<types::global_cell_index>::max(),
+          refine_fraction,
+          coarsen_fraction);
+      const std::pair<double, double> min_max(
+        Thresholds::compute_global_min_and_max_at_root(indicators,
+                                                       MPI_COMM_SELF));
+      const double top =
+        Thresholds::RefineAndCoarsenFixedNumber::compute_threshold(
+          indicators,
+          min_max,
+          static_cast<types::global_cell_index>(fractions.first * n_cells),
+          MPI_COMM_SELF);
+      const double bottom =
+        fractions.second > 0 ?
+          Thresholds::RefineAndCoarsenFixedNumber::compute_threshold(
+            indicators,
+            min_max,
+            static_cast<types::global_cell_index>(
+              std::ceil((1. - fractions.second) * n_cells)),
+            MPI_COMM_SELF) :
+          std::numeric_limits<float>::lowest();
+      GridRefinement::refine(triangulation, indicators, top);
+      GridRefinement::coarsen(triangulation, indicators, bottom);
+    }
   } // namespace
 
 
 
   template <int dim>
   void
-  MeshAdaptor<dim>::mark_cells(
-    parallel::distributed::Triangulation<dim> &triangulation) const
+  MeshAdaptor<dim>::mark_cells(Triangulation<dim> &triangulation) const
   {
     // indicators of all criteria, each scaled to maximum 1, added
     Vector<float> indicators(triangulation.n_active_cells());
@@ -332,8 +389,10 @@ namespace dyncontact
     if (Utilities::MPI::max(double(indicators.linfty_norm()),
                             this->get_mpi_communicator()) > 0.)
       {
-        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-          triangulation, indicators, refine_fraction, coarsen_fraction);
+        refine_and_coarsen_fixed_number(triangulation,
+                                        indicators,
+                                        refine_fraction,
+                                        coarsen_fraction);
         // where every indicator is zero (a uniform field) there is nothing
         // to refine. When fewer cells than the refine fraction have
         // non-zero indicators, the fraction's threshold is zero and

@@ -136,11 +136,15 @@ namespace dyncontact
     /// (cell data).
     template <int dim>
     Vector<float>
-    subdomains(const parallel::distributed::Triangulation<dim> &triangulation)
+    subdomains(const Triangulation<dim> &triangulation)
     {
       Vector<float> subdomain(triangulation.n_active_cells());
       for (auto &s : subdomain)
-        s = triangulation.locally_owned_subdomain();
+        // (a serial triangulation has no subdomain of its own: 0)
+        s = triangulation.locally_owned_subdomain() ==
+                numbers::invalid_subdomain_id ?
+              0 :
+              triangulation.locally_owned_subdomain();
       return subdomain;
     }
 
@@ -150,8 +154,7 @@ namespace dyncontact
     /// @p triangulation (cell data, 0 on the other cells).
     template <int dim>
     Vector<float>
-    refinement_levels(
-      const parallel::distributed::Triangulation<dim> &triangulation)
+    refinement_levels(const Triangulation<dim> &triangulation)
     {
       Vector<float> level(triangulation.n_active_cells());
       for (const auto &cell : triangulation.active_cell_iterators())
@@ -277,10 +280,9 @@ namespace dyncontact
     /// @p cells_per_piece cells, numbered over all ranks. Collective.
     template <int dim>
     Pieces<dim>
-    split_into_pieces(
-      const parallel::distributed::Triangulation<dim> &triangulation,
-      const unsigned int                               cells_per_piece,
-      const MPI_Comm                                   comm)
+    split_into_pieces(const Triangulation<dim> &triangulation,
+                      const unsigned int        cells_per_piece,
+                      const MPI_Comm            comm)
     {
       Pieces<dim>  pieces;
       unsigned int n_owned = 0;
@@ -317,10 +319,10 @@ namespace dyncontact
     /// no piece @p k).
     template <int dim>
     void
-    select_piece(DataOut<dim>                                    &data_out,
-                 const parallel::distributed::Triangulation<dim> &triangulation,
-                 const Pieces<dim>                               &pieces,
-                 const unsigned int                               k)
+    select_piece(DataOut<dim>             &data_out,
+                 const Triangulation<dim> &triangulation,
+                 const Pieces<dim>        &pieces,
+                 const unsigned int        k)
     {
       using active_cell_iterator =
         typename Triangulation<dim>::active_cell_iterator;

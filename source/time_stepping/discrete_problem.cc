@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
 
 #include <dyncontact/base/memory_check.h>
 #include <dyncontact/base/vector_copy.h>
@@ -22,14 +23,29 @@ namespace dyncontact
     const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
     TimeStepController                                 &time_step_controller,
     const ConditionalOStream                           &pcout,
-    const MPI_Comm                                      comm)
-    : triangulation(comm)
+    const MPI_Comm                                      comm,
+    const bool                                          serial_triangulation)
+    : triangulation_storage(
+        serial_triangulation ?
+          std::make_unique<Triangulation<dim>>(
+            // p4est's 2:1 balance across faces and vertices
+            Triangulation<dim>::limit_level_difference_at_vertices) :
+          std::make_unique<parallel::distributed::Triangulation<dim>>(comm))
+    , triangulation(*triangulation_storage)
     , comm(comm)
     , pcout(pcout)
     , scheme(scheme)
     , numerical_dissipation(numerical_dissipation)
     , time_step_controller(time_step_controller)
   {
+    AssertThrow(
+      !serial_triangulation || Utilities::MPI::n_mpi_processes(comm) == 1,
+      ExcMessage("Mesh/Triangulation = serial holds the whole mesh "
+                 "in deal.II's Triangulation on one MPI rank, but "
+                 "this run has " +
+                 std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
+                 " ranks: run it on one rank, or set "
+                 "'Triangulation' to distributed."));
     solver_parameters.parse_parameters(prm);
     AssertThrow(!(scheme.is_static && numerical_dissipation > 0.),
                 ExcMessage("Time integration/Numerical dissipation > 0 is "
@@ -350,7 +366,7 @@ namespace dyncontact
     }
     {
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
-      // transfer u and udot to the new mesh (p4est repartitions it)
+      // transfer u and udot to the new mesh (p4est also repartitions it)
       system->prepare_for_refinement(u, udot);
       triangulation.execute_coarsening_and_refinement();
     }

@@ -72,7 +72,9 @@ namespace dyncontact
     const Scene<dim> &
     get_scene() const;
 
-    const parallel::distributed::Triangulation<dim> &
+    /// p4est's triangulation, or deal.II's serial one
+    /// (Mesh/Triangulation).
+    const Triangulation<dim> &
     get_triangulation() const;
 
     const Mapping<dim> &

@@ -3,14 +3,15 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/distributed/solution_transfer.h>
-#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/solution_transfer.h>
 
 #include <dyncontact/discretization/elastic_operator.h>
 #include <dyncontact/scenes/interface.h>
@@ -162,8 +163,7 @@ namespace dyncontact
     /// DoFs, constraints, sparsity patterns and vectors on the current mesh
     /// (the first call attaches the DoF handlers to @p triangulation).
     void
-    setup(const parallel::distributed::Triangulation<dim> &triangulation,
-          const Scene<dim>                                &scene);
+    setup(const Triangulation<dim> &triangulation, const Scene<dim> &scene);
 
     /// M (the diagonal only if lumped), the matrix-free A and B, f and the
     /// boundary weights w (only M on Parameters::multigrid_level); checks
@@ -205,15 +205,22 @@ namespace dyncontact
     /// After refinement and setup(): (u, udot) on the new mesh.
     void
     interpolate_after_refinement(VectorType &u, VectorType &udot);
-    /// Attaches @p vectors (u, udot, a nodal vector of the warm-start
-    /// active sets, and what else the run needs to resume) to the
-    /// triangulation for its save().
+    /// Checkpoint: the mesh and @p vectors (u, udot, a nodal vector of the
+    /// warm-start active sets, and what else the run needs to resume) into
+    /// @p file: p4est's files (attached to the triangulation's save()), or
+    /// on a serial triangulation SerialMeshFile.
     void
-    prepare_for_serialization(const std::vector<const VectorType *> &vectors);
-    /// After the triangulation's load() and setup(): the vectors, in the
+    save(const std::string                     &file,
+         const std::vector<const VectorType *> &vectors);
+    /// Resume: @p triangulation, which holds the coarse mesh, refined to the
+    /// mesh of @p file (before setup()).
+    static void
+    load_mesh(const std::string &file, Triangulation<dim> &triangulation);
+    /// Resume, after load_mesh() and setup(): the vectors of @p file, in the
     /// order and number they were saved.
     void
-    deserialize(const std::vector<VectorType *> &vectors);
+    load_vectors(const std::string               &file,
+                 const std::vector<VectorType *> &vectors);
 
     SystemMatrices
     matrices() const;
@@ -408,10 +415,15 @@ namespace dyncontact
     VectorType           load;
     VectorType           boundary_weights;
 
-    /// A state in transfer (refinement or checkpoint) and its ghosted copy.
+    /// A state in transfer (refinement or checkpoint) and its ghosted copy:
+    /// p4est's transfer, or deal.II's on a serial triangulation.
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
-                            transfer;
-    std::vector<VectorType> transferred;
+                                                               transfer;
+    std::unique_ptr<dealii::SolutionTransfer<dim, VectorType>> serial_transfer;
+    std::vector<VectorType>                                    transferred;
+    /// Whether the DoFs are on deal.II's serial triangulation.
+    bool
+    is_serial() const;
     /// Copies @p vectors into ghosted vectors and starts a new transfer
     /// object on the current DoFs; returns the vectors to hand to it.
     std::vector<const VectorType *>

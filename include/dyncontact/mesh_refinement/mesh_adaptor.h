@@ -81,7 +81,7 @@ namespace dyncontact
 
     /// Flags the cells of @p triangulation by the criteria (collective).
     void
-    mark_cells(parallel::distributed::Triangulation<dim> &triangulation) const;
+    mark_cells(Triangulation<dim> &triangulation) const;
 
     /// Flags the cells of the contact zone of the current state (the
     /// refinement before t = 0).

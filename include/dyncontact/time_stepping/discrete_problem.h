@@ -3,8 +3,8 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/distributed/tria.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/tria.h>
 
 #include <dyncontact/contact/active_set_solver.h>
 #include <dyncontact/time_stepping/integrators.h>
@@ -40,7 +40,9 @@ namespace dyncontact
     /// Reads the parameters of the contact rows and the active-set solver
     /// from @p prm; @p numerical_dissipation: theta of the integrator
     /// (Time integration/Numerical dissipation); @p system_parameters: the
-    /// polynomial degree and the mass matrix.
+    /// polynomial degree and the mass matrix; @p serial_triangulation:
+    /// deal.II's Triangulation instead of p4est's (Mesh/Triangulation =
+    /// serial, one rank only).
     DiscreteProblem(
       ParameterHandler                                   &prm,
       const Scheme                                       &scheme,
@@ -48,7 +50,8 @@ namespace dyncontact
       const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
       TimeStepController                                 &time_step_controller,
       const ConditionalOStream                           &pcout,
-      const MPI_Comm                                      comm);
+      const MPI_Comm                                      comm,
+      const bool serial_triangulation = false);
 
     ~DiscreteProblem();
 
@@ -120,8 +123,14 @@ namespace dyncontact
     void
     set_n_earlier_step_matrices(const unsigned int n);
 
-    parallel::distributed::Triangulation<dim> triangulation;
-    const MappingQ1<dim>                      mapping;
+  private:
+    std::unique_ptr<Triangulation<dim>> triangulation_storage;
+
+  public:
+    /// p4est's parallel::distributed::Triangulation, or with
+    /// Mesh/Triangulation = serial deal.II's Triangulation (one rank).
+    Triangulation<dim>  &triangulation;
+    const MappingQ1<dim> mapping;
 
     const SemiDiscreteSystem<dim> &
     get_system() const
