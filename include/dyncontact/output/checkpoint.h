@@ -17,8 +17,9 @@ namespace dyncontact
 
   /**
    * Checkpoints in <Output directory>/checkpoints: each is written to a new
-   * folder step_NNNNNNN (the mesh with u and udot by p4est's save, written
-   * by the simulator into mesh_file(); and state.txt with every component's
+   * folder step_NNNNNNN (the mesh with u and udot by p4est's save, or on a
+   * serial triangulation by SerialMeshFile, written by the simulator into
+   * mesh_file(); and state.txt with every component's
    * state as key/value pairs) and only then marked as the last good one by
    * an atomic rename of checkpoints/last, so a crash while writing leaves
    * the previous checkpoint usable; the one before it is kept too. state.txt
