@@ -60,7 +60,17 @@ namespace dyncontact::SerialMeshFile
                   ExcMessage("'" + file +
                              "' is not the mesh of a checkpoint written "
                              "with Mesh/Triangulation = serial."));
-      std::vector<char> bits(read_count(in, file));
+      // (a count larger than the file is damage, not a size to allocate)
+      const std::streampos here = in.tellg();
+      in.seekg(0, std::ios::end);
+      const std::uint64_t rest = in.tellg() - here;
+      in.seekg(here);
+      const std::uint64_t n = read_count(in, file);
+      AssertThrow(n <= rest,
+                  ExcMessage("The checkpoint's mesh file '" + file +
+                             "' is damaged: it claims " + std::to_string(n) +
+                             " cells, more than its size allows."));
+      std::vector<char> bits(n);
       in.read(bits.data(), bits.size());
       AssertThrow(in.good(),
                   ExcMessage("The checkpoint's mesh file '" + file +
