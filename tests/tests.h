@@ -290,8 +290,6 @@ namespace testing
     return result;
   }
 
-  /// The two bars (1 and 2 cells across) on a mesh adapted every 4 steps
-  /// by the velocity's Kelly indicator and the contact zone: the extra
   /// The calls of the TimerOutput section @p section in the summary file
   /// @p summary (0 if it is not there).
   inline unsigned int
@@ -311,7 +309,9 @@ namespace testing
     return 0;
   }
 
-  /// entries for bar_prm() of the adaptive resume tests.
+  /// Entries for bar_prm() of the adaptive resume tests: the two bars (1
+  /// and 2 cells across) on a mesh adapted every 4 steps by the velocity's
+  /// Kelly indicator and the contact zone.
   inline std::string
   adaptive_two_bars_prm()
   {

@@ -299,6 +299,7 @@ namespace dyncontact
     pcout << "dyncontact: scene '" << scene->name() << "', " << dim
           << "D, scheme " << scheme.name << ", "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
+          << (parameters.serial_triangulation ? ", serial triangulation" : "")
           << std::endl;
     // the output directory must be writable; nothing in it is touched
     // before the setup has succeeded
