@@ -1,16 +1,18 @@
 // Mesh/Triangulation = serial (deal.II's Triangulation on one rank instead
 // of p4est's) against the distributed triangulation, on adaptive meshes:
 // - issue 31's bar (H = 0.25, 32 cells along, levels 0 to 2, the recovery
-//   indicator every 2 steps, p = 1, assembled S) to t = 0.6 s, and two bars
-//   of 4 and 5 cells across adapted by the recovery indicator (two bodies,
-//   contact rows on the adapted mesh) with p = 2 and the matrix-free S,
-//   with hanging nodes: the same mesh after every adaptation (cells and
-//   DoFs in every row: both mark the same cells with the same thresholds
-//   and balance the same way), and the statistics agree to 1e-7 apart from
-//   the iteration counts (the cells and DoFs are numbered differently, so
-//   the sums differ in round-off, which CG's tolerance of 1e-12 relative
-//   to the right-hand side lets grow to 4.5e-9 in the normal velocity of
-//   the active nodes);
+//   indicator every 2 steps, p = 1, assembled S) to t = 0.6 s; two bars of
+//   4 and 5 cells across adapted by the recovery indicator (two bodies,
+//   contact rows on the adapted mesh) with p = 2 and the matrix-free S; a
+//   3D bar (p = 1, the recovery indicator); the 2D bar with p = 2 and the
+//   p-multigrid (its linear level on the same triangulation) refined at the
+//   contact zone; all with hanging nodes: the same mesh after every
+//   adaptation (cells and DoFs in every row: both mark the same cells with
+//   the same thresholds and balance the same way), and the statistics
+//   agree to 1e-7 apart from the iteration counts (the cells and DoFs are
+//   numbered differently, so the sums differ in round-off, which CG's
+//   tolerance of 1e-12 relative to the right-hand side lets grow to 4.5e-9
+//   in the normal velocity of the active nodes);
 // - a serial run of two bars adapted by the recovery indicator, stopped at
 //   a checkpoint and resumed, agrees with the uninterrupted one to 1e-8 (the
 //   checkpoint stores the refinement tree and the vectors cell by cell; the
@@ -78,8 +80,36 @@ main(int argc, char **argv)
               "set Polynomial degree = 2\n"
               "subsection Contact solver\n  set Step matrix = matrix-free\n"
               "end\n");
-  for (const Case &c : {Case{"bar, p = 1", bar},
-                        Case{"two bars, p = 2, matrix-free S", two_bars}})
+  const std::string bar_3d = bar_prm(3,
+                                     "N-CS++",
+                                     8,
+                                     1. / 32.,
+                                     0.3,
+                                     "subsection Mesh refinement\n"
+                                     "  set Refinement interval = 2\n"
+                                     "  set Maximum level = 1\n"
+                                     "  set Initial contact refinements = 1\n"
+                                     "  set Criteria = recovery velocity\n"
+                                     "end\n");
+  const std::string multigrid =
+    bar_prm(2,
+            "N-CS++",
+            20,
+            1. / 40.,
+            0.4,
+            "set Polynomial degree = 2\n"
+            "subsection Contact solver\n  set Step matrix = matrix-free\n"
+            "  set Preconditioner = multigrid\nend\n"
+            "subsection Mesh refinement\n"
+            "  set Refinement interval = 4\n"
+            "  set Maximum level = 2\n"
+            "  set Criteria = contact zone\n"
+            "end\n");
+  for (const Case &c :
+       {Case{"bar, p = 1", bar},
+        Case{"two bars, p = 2, matrix-free S", two_bars},
+        Case{"3D bar, p = 1", bar_3d},
+        Case{"bar, p = 2, p-multigrid, contact zone", multigrid}})
     {
       const Statistics distributed =
         run(c.prm + "set Output directory = results-distributed\n");
@@ -96,7 +126,7 @@ main(int argc, char **argv)
       log() << c.name << ": " << serial.rows.size() - 1 << " steps, "
             << max_of(cells) << " cells at most (" << cells[0]
             << " at first); the same mesh in every row: "
-            << check(same_meshes && max_of(cells) > 1.5 * cells[0])
+            << check(same_meshes && max_of(cells) > cells[0])
             << "; the statistics agree to 1e-7: "
             << check(comparison.difference.first <= 1e-7) << "\n";
     }
