@@ -97,14 +97,9 @@ main(int argc, char **argv)
             20,
             1. / 40.,
             0.4,
-            "set Polynomial degree = 2\n"
-            "subsection Contact solver\n  set Step matrix = matrix-free\n"
-            "  set Preconditioner = multigrid\nend\n"
-            "subsection Mesh refinement\n"
-            "  set Refinement interval = 4\n"
-            "  set Maximum level = 2\n"
-            "  set Criteria = contact zone\n"
-            "end\n");
+            q2_contact_zone_prm() +
+              "subsection Contact solver\n  set Step matrix = matrix-free\n"
+              "  set Preconditioner = multigrid\nend\n");
   for (const Case &c :
        {Case{"bar, p = 1", bar},
         Case{"two bars, p = 2, matrix-free S", two_bars},

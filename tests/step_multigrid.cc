@@ -72,17 +72,7 @@ main(int argc, char **argv)
           bar_prm(3, "N-CS++", 8, 1. / 32., 0.3) +
             "set Polynomial degree = 2\n");
   compare("2D bar, Q2, adaptive (contact zone)",
-          bar_prm(2,
-                  "N-CS++",
-                  20,
-                  1. / 40.,
-                  0.4,
-                  "set Polynomial degree = 2\n"
-                  "subsection Mesh refinement\n"
-                  "  set Refinement interval = 4\n"
-                  "  set Maximum level = 2\n"
-                  "  set Criteria = contact zone\n"
-                  "end\n"));
+          bar_prm(2, "N-CS++", 20, 1. / 40., 0.4, q2_contact_zone_prm()));
 
   const SolverComparison coarse =
     compare("2D bar, Q2, tau = 8 h/c, 16 cells", stiff_bar_prm(16));

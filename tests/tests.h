@@ -309,6 +309,19 @@ namespace testing
     return 0;
   }
 
+  /// Entries for bar_prm(): Q2, the mesh adapted every 4 steps up to two
+  /// levels at the contact zone.
+  inline std::string
+  q2_contact_zone_prm()
+  {
+    return "set Polynomial degree = 2\n"
+           "subsection Mesh refinement\n"
+           "  set Refinement interval = 4\n"
+           "  set Maximum level = 2\n"
+           "  set Criteria = contact zone\n"
+           "end\n";
+  }
+
   /// Entries for bar_prm() of the adaptive resume tests: the two bars (1
   /// and 2 cells across) on a mesh adapted every 4 steps by the velocity's
   /// Kelly indicator and the contact zone.
