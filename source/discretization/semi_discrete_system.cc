@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <dyncontact/base/triangulation.h>
 #include <dyncontact/discretization/rigid_motions.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/discretization/serial_mesh_file.h>
@@ -52,9 +53,7 @@ namespace dyncontact
     // deal.II 9.4 on a coarse mesh with rotated faces: deal.II kept eight
     // children where p4est had coarsened them), every transfer of u, udot or
     // a checkpoint pairs data with the wrong cells. Stop instead.
-    const auto *distributed =
-      dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
-        &triangulation);
+    const auto *distributed = as_distributed(triangulation);
     AssertThrow(
       distributed == nullptr ||
         Utilities::MPI::logical_or(
@@ -457,8 +456,7 @@ namespace dyncontact
   bool
   SemiDiscreteSystem<dim>::is_serial() const
   {
-    return dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
-             &dof_handler.get_triangulation()) == nullptr;
+    return as_distributed(dof_handler.get_triangulation()) == nullptr;
   }
 
 
@@ -518,9 +516,7 @@ namespace dyncontact
       {
         const auto ghosted = start_transfer(vectors);
         transfer->prepare_for_serialization(ghosted);
-        dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
-          dof_handler.get_triangulation())
-          .save(file);
+        as_distributed(dof_handler.get_triangulation())->save(file);
       }
   }
 
@@ -531,9 +527,7 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::load_mesh(const std::string  &file,
                                      Triangulation<dim> &triangulation)
   {
-    if (auto *distributed =
-          dynamic_cast<parallel::distributed::Triangulation<dim> *>(
-            &triangulation))
+    if (auto *distributed = as_distributed(triangulation))
       distributed->load(file);
     else
       SerialMeshFile::read_refinement(file, triangulation);

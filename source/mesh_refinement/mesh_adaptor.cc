@@ -1,12 +1,12 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/grid_refinement.h>
-#include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <boost/serialization/utility.hpp>
 
+#include <dyncontact/base/triangulation.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
@@ -334,9 +334,7 @@ namespace dyncontact
                                     const double         refine_fraction,
                                     const double         coarsen_fraction)
     {
-      if (auto *distributed =
-            dynamic_cast<parallel::distributed::Triangulation<dim> *>(
-              &triangulation))
+      if (auto *distributed = as_distributed(triangulation))
         {
           parallel::distributed::GridRefinement::
             refine_and_coarsen_fixed_number(*distributed,

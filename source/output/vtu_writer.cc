@@ -4,6 +4,7 @@
 
 #include <dyncontact/base/collective_errors.h>
 #include <dyncontact/base/global_parameters.h>
+#include <dyncontact/base/triangulation.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/output/vtu_writer.h>
@@ -138,13 +139,10 @@ namespace dyncontact
     Vector<float>
     subdomains(const Triangulation<dim> &triangulation)
     {
+      // (a serial triangulation has no subdomain of its own: 0)
+      const auto   *distributed = as_distributed(triangulation);
       Vector<float> subdomain(triangulation.n_active_cells());
-      for (auto &s : subdomain)
-        // (a serial triangulation has no subdomain of its own: 0)
-        s = triangulation.locally_owned_subdomain() ==
-                numbers::invalid_subdomain_id ?
-              0 :
-              triangulation.locally_owned_subdomain();
+      subdomain = distributed ? distributed->locally_owned_subdomain() : 0;
       return subdomain;
     }
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/tria.h>
 
 #include <dyncontact/base/memory_check.h>
+#include <dyncontact/base/triangulation.h>
 #include <dyncontact/base/vector_copy.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/discretization/rigid_motions.h>
@@ -25,12 +25,7 @@ namespace dyncontact
     const ConditionalOStream                           &pcout,
     const MPI_Comm                                      comm,
     const bool                                          serial_triangulation)
-    : triangulation_storage(
-        serial_triangulation ?
-          std::make_unique<Triangulation<dim>>(
-            // p4est's 2:1 balance across faces and vertices
-            Triangulation<dim>::limit_level_difference_at_vertices) :
-          std::make_unique<parallel::distributed::Triangulation<dim>>(comm))
+    : triangulation_storage(make_triangulation<dim>(serial_triangulation, comm))
     , triangulation(*triangulation_storage)
     , comm(comm)
     , pcout(pcout)
