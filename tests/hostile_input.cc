@@ -357,7 +357,7 @@ main(int argc, char **argv)
     {"checkpoint",
          "'last' names a missing folder",
          resume,
-         "state.txt",
+         "the folder does not exist",
          "bad last"},
     {"checkpoint",
          "no checkpoint at all",
@@ -637,6 +637,37 @@ main(int argc, char **argv)
     log() << klass << ": " << count.second << " of " << count.first
           << " cases handled\n";
   log() << "\n";
+
+  // a damaged last checkpoint: the refusal names the one before it (kept
+  // beside it) and how to resume from it; done as it says, the run resumes
+  // from that one
+  {
+    fs::remove_all("ck");
+    fs::copy("ck_pristine", "ck", fs::copy_options::recursive);
+    damages.at("flip data")();
+    std::ofstream("case.prm") << base << resume;
+    const Outcome     refused = run_program("case.prm");
+    const std::string advice  = "', is kept beside it";
+    const auto        at      = refused.text.find(advice);
+    const auto        begin   = refused.text.rfind('\'', at - 1) + 1;
+    const std::string previous =
+      at == std::string::npos ? "" : refused.text.substr(begin, at - begin);
+    const bool named_previous =
+      refused.status != 0 && !previous.empty() &&
+      fs::is_directory("ck/checkpoints/" + previous) &&
+      "ck/checkpoints/" + previous != ck_step &&
+      refused.text.find("echo " + previous + " > ck/checkpoints/last") !=
+        std::string::npos;
+    std::ofstream("ck/checkpoints/last") << previous << "\n";
+    const Outcome resumed = run_program("case.prm");
+    log() << "damaged last checkpoint: the refusal names the one before it "
+             "and how to resume from it: "
+          << check(named_previous) << "; done so, the run resumes from it: "
+          << check(resumed.status == 0 &&
+                   resumed.text.find("resumed from ck/checkpoints/" +
+                                     previous) != std::string::npos)
+          << "\n";
+  }
 
   // inputs that must run
   std::ofstream("bom.prm") << "\xEF\xBB\xBF" << base;

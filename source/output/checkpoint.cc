@@ -13,6 +13,18 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// What a resumed run may change (the entries parse_parameters() leaves
+    /// out of the critical parameters).
+    const std::string changeable_on_resume =
+      "End time, Time step adaptation, the Contact solver's Maximum "
+      "active-set iterations and Maximum linear iterations, Output directory, "
+      "subsection Output and subsection Checkpointing";
+  } // namespace
+
+
+
   void
   Checkpoints::declare_parameters(ParameterHandler &prm)
   {
@@ -21,9 +33,10 @@ namespace dyncontact
                       "false",
                       Patterns::Bool(),
                       "Continue from the last good checkpoint in <Output "
-                      "directory>/checkpoints. The prm must agree with the "
-                      "checkpoint's in everything but End time, subsection "
-                      "Output and subsection Checkpointing.");
+                      "directory>/checkpoints (the folder named in its file "
+                      "'last'). The prm must agree with the checkpoint's in "
+                      "everything but " +
+                        changeable_on_resume + ".");
     prm.declare_entry("Interval in steps",
                       "0",
                       Patterns::Integer(0),
@@ -198,13 +211,39 @@ namespace dyncontact
     // rank 0 verifies every file of the checkpoint before anything is read
     std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      problem = verify(dir);
+      {
+        problem = verify(dir);
+        if (!problem.empty())
+          {
+            // the previous checkpoint, kept beside the last one: how to
+            // resume from it (the last one is not removed behind the user's
+            // back, nor silently replaced by an older state)
+            std::string       previous;
+            std::error_code   error; // (an unreadable folder: no advice)
+            const std::string last_name = std::filesystem::path(dir).filename();
+            for (const auto &entry :
+                 std::filesystem::directory_iterator(root, error))
+              {
+                const std::string name = entry.path().filename();
+                if (entry.is_directory() && name.rfind("step_", 0) == 0 &&
+                    name != last_name && name > previous)
+                  previous = name;
+              }
+            problem +=
+              previous.empty() ?
+                ". There is no other checkpoint beside it: start afresh "
+                "(Checkpointing/Resume = false)." :
+                ". The newest other checkpoint, '" + previous +
+                  "', is kept beside it: to resume from that one, write its "
+                  "name into '" +
+                  root + "/last' (echo " + previous + " > " + root +
+                  "/last); or start afresh (Checkpointing/Resume = false).";
+          }
+      }
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     AssertThrow(problem.empty(),
                 ExcMessage("Checkpointing/Resume: the checkpoint '" + dir +
-                           "' cannot be used: " + problem +
-                           ". Remove it (the previous checkpoint, if any, "
-                           "is kept next to it) or start afresh."));
+                           "' cannot be used: " + problem));
 
     std::ifstream in(dir + "/state.txt");
     const auto  damaged = ExcMessage("Checkpointing/Resume: the checkpoint '" +
@@ -238,9 +277,10 @@ namespace dyncontact
         AssertThrow(false,
                     ExcMessage("Checkpointing/Resume: this input differs from "
                                "the checkpoint's in a parameter that must not "
-                               "change (everything but End time, Output and "
-                               "Checkpointing may not): the checkpoint has '" +
-                               la + "', this input '" + lb + "'."));
+                               "change (only " +
+                               changeable_on_resume +
+                               " may): the checkpoint has '" + la +
+                               "', this input '" + lb + "'."));
       }
     return state;
   }
@@ -259,6 +299,9 @@ namespace dyncontact
   Checkpoints::verify(const std::string &dir)
   {
     const std::string state_file = dir + "/state.txt";
+    if (!std::filesystem::is_directory(dir))
+      return "the folder does not exist (its name is in the file 'last' of "
+             "the checkpoints)";
     if (!std::filesystem::is_regular_file(state_file))
       return "its file state.txt is missing";
     std::ifstream     in(state_file, std::ios::binary);

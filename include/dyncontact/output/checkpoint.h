@@ -29,7 +29,9 @@ namespace dyncontact
    * instead of being loaded. A resumed
    * run must agree with the checkpoint in its critical parameters (all but
    * End time, Output directory, Output, Checkpointing, Time step adaptation
-   * and the solver's iteration limits).
+   * and the solver's iteration limits). A checkpoint that fails the checks
+   * is refused with what is wrong, and with the name of the checkpoint
+   * before it (kept beside it) and how to resume from that one.
    */
   class Checkpoints
   {
