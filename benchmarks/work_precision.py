@@ -34,9 +34,11 @@ Adaptive meshes: the coarse mesh of the uniform run two levels coarser (one
 for the two bars, whose coarse mesh across would be less than a cell),
 refined up to the same finest level, every 2 steps (refine 20 %, coarsen
 30 %, the defaults), by the Kelly or the recovery indicator of the
-velocity; the Hertz drop and the ball drop as in benchmarks/adaptivity.py (one global refinement, Kelly of the velocity on
-2 % and the contact zone, half of the cells coarsened), every 2 and every
-16 steps. p >= 2 runs apply S matrix-free (Contact solver/Step matrix =
+velocity; the Hertz drop and the ball drop as in benchmarks/adaptivity.py
+(one global refinement, Kelly of the velocity on 2 % and the contact zone,
+half of the cells coarsened), every 2 and every 16 steps, and every 16
+steps from the coarse mesh (no global refinement, Minimum level 0: rows
+"from level 0"). p >= 2 runs apply S matrix-free (Contact solver/Step matrix =
 matrix-free, Jacobi), p = 1 runs assemble it.
 
 Writes doc/work_precision_<scene>.png and prints the tables of
@@ -190,13 +192,13 @@ if not only or "two_bars" in only:
                              ("Cells across body 2", cells // 10 + 1)], 1,
               [("adaptive recovery", "recovery velocity")])
 
-def reference_scene(key, text, levels, reference_p, reference_level, tau, adaptive_min,
-                    intervals):
+def reference_scene(key, text, levels, reference_p, reference_level, tau, starts):
     """Uniform runs per p at the given levels, adaptive runs per p up to
-    the finest of them if that is above adaptive_min (from global level
-    adaptive_min, Kelly of the velocity on 2 % and the contact zone, half
-    coarsened), one for each refinement interval in intervals, against a
-    uniform run of degree reference_p at reference_level with the same
+    the finest of them: for each (coarsest, intervals) in starts, from
+    global level coarsest if the finest is above it (Kelly of the velocity
+    on 2 % and the contact zone, half coarsened, the coarsest level the
+    Minimum level), one for each refinement interval in intervals; against
+    a uniform run of degree reference_p at reference_level with the same
     tau."""
     reference_rows, reference_summary = run("%s-reference" % key,
                                             text + mesh_prm(reference_p, tau, reference_level))
@@ -227,32 +229,37 @@ def reference_scene(key, text, levels, reference_p, reference_level, tau, adapti
                 p=p, mesh="uniform", finest=level, dofs=mean(column(rows, "dofs")),
                 time=run_time(summary), **measures(rows, summary)))
         level = levels[p][-1]
-        if level <= adaptive_min:
-            continue
-        for interval in intervals:
-            rows, summary = run("%s-p%d-adaptive-%d-every-%d" % (key, p, level, interval),
-                                text + mesh_prm(p, tau, adaptive_min,
-                                                adaptive=(level, adaptive_min, level,
-                                                          "kelly velocity, contact zone",
-                                                          0.02, 0.5),
-                                                interval=interval))
-            results.setdefault(key, []).append(dict(
-                p=p, mesh="adaptive kelly every %d" % interval, finest=level,
-                dofs=mean(column(rows, "dofs")), time=run_time(summary),
-                **measures(rows, summary)))
+        for coarsest, intervals in starts:
+            if level <= coarsest:
+                continue
+            for interval in intervals:
+                label = "adaptive kelly every %d" % interval + (
+                    " from level %d" % coarsest if coarsest != starts[0][0] else "")
+                rows, summary = run("%s-p%d-adaptive-%d-every-%d-from-%d"
+                                    % (key, p, level, interval, coarsest),
+                                    text + mesh_prm(p, tau, coarsest,
+                                                    adaptive=(level, coarsest, level,
+                                                              "kelly velocity, contact zone",
+                                                              0.02, 0.5),
+                                                    interval=interval))
+                results.setdefault(key, []).append(dict(
+                    p=p, mesh=label, finest=level,
+                    dofs=mean(column(rows, "dofs")), time=run_time(summary),
+                    **measures(rows, summary)))
 
 
 if not only or "hertz" in only:
     hertz = open("prm/hertz_drop.prm").read().replace("set End time  = 1", "set End time  = 0.6")
     hertz += "\nsubsection Scene\n  subsection Hertz\n    set Contact zone refinements = 0\n  end\nend\n"
-    reference_scene("hertz", hertz, {1: [2, 3, 4], 2: [1, 2, 3], 3: [1, 2]}, 2, 4, 0.01, 1,
-                    [2, 16])
+    reference_scene("hertz", hertz, {1: [2, 3, 4], 2: [1, 2, 3], 3: [1, 2]}, 2, 4, 0.01,
+                    [(1, [2, 16]), (0, [16])])
 
 if not only or "ball_drop" in only:
     ball = open("prm/ball_drop_adaptive.prm").read()
     ball = ball[:ball.index("subsection Mesh refinement")] + ball[ball.index("subsection Material\n"):]
     ball = ball.replace("set Output interval = 0.1", "set Output interval = 0.5")
-    reference_scene("ball_drop", ball, {1: [1, 2], 2: [1, 2]}, 1, 3, 0.02, 1, [2, 16])
+    reference_scene("ball_drop", ball, {1: [1, 2], 2: [1, 2]}, 1, 3, 0.02,
+                    [(1, [2, 16]), (0, [16])])
 
 for key, values in results.items():
     print("\n%s:\n" % key)

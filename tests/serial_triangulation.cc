@@ -126,6 +126,23 @@ main(int argc, char **argv)
             << check(comparison.difference.first <= 1e-7) << "\n";
     }
 
+  // summary.txt says which triangulation held the mesh (the last case's)
+  const auto summary_says = [](const std::string &directory,
+                               const std::string &line) {
+    std::ifstream     in(directory + "/summary.txt");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str().find("\n" + line + "\n") != std::string::npos;
+  };
+  log() << "summary.txt names the triangulation: "
+        << check(
+             summary_says("results-serial",
+                          "parallel: 1 MPI rank(s), serial triangulation") &&
+             summary_says("results-distributed",
+                          "parallel: 1 MPI rank(s), distributed "
+                          "triangulation (p4est)"))
+        << "\n";
+
   // checkpoint and resume of the serial triangulation: the two bars of
   // tests/checkpoint_restart, stopped at t = 0.6375 s (step 102), where the
   // finer side of the interface is no longer the slave side chosen at t = 0

@@ -53,6 +53,8 @@ namespace dyncontact
     out << (input.adaptive_time_steps ? " for the last step matrix" : "")
         << "\n";
 
+    if (!input.ranks_and_mesh.empty())
+      out << "parallel: " << input.ranks_and_mesh << "\n";
     out << std::setprecision(3) << "wall time: " << input.wall_time
         << " s, of which the time loop " << input.loop_wall_time << " s\n";
     std::size_t width = 0;

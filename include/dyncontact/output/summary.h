@@ -33,6 +33,10 @@ namespace dyncontact
     /// of S scaled by its diagonal that 'automatic' decided by (infinite if the
     /// choice was not automatic).
     std::string preconditioner = "AMG";
+    /// The MPI ranks and the triangulation that held the mesh
+    /// (Mesh/Triangulation): "2 MPI rank(s), distributed triangulation
+    /// (p4est)".
+    std::string ranks_and_mesh;
     /// whether S is applied without a matrix, and then max_i S_ii / M_ii
     bool   matrix_free     = false;
     double inertia_ratio   = 1.;
