@@ -286,7 +286,9 @@ for key, values in results.items():
             for v in values:
                 if v["p"] == p and v["mesh"] not in ["uniform", dissipative]:
                     ax.loglog([v["time"]], [v[measure]],
-                              "s" if "recovery" in v["mesh"] else "^",
+                              "s" if "recovery" in v["mesh"] else
+                              "D" if "from level" in v["mesh"] else
+                              "v" if "every 16" in v["mesh"] else "^",
                               color=colour, markerfacecolor="none", markersize=9,
                               label="p = %d %s" % (p, v["mesh"]))
     by_reference = key in ["hertz", "ball_drop"]
