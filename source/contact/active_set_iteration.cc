@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace dyncontact
 {
@@ -66,14 +67,78 @@ namespace dyncontact
 
 
   void
-  ActiveSetSolver::transpose_distribute(
+  ActiveSetSolver::Condensation::reinit(
     const AffineConstraints<double> &homogeneous,
-    VectorType                      &z) const
+    const VectorType                &layout,
+    const IndexSet                  &owned,
+    const MPI_Comm                   comm)
+  {
+    // (all vectors of the solve have this layout: owned entries only)
+    Assert(!layout.has_ghost_elements(), ExcInternalError());
+    constraints = &homogeneous;
+    rows.clear();
+    start.assign(1, 0);
+    columns.clear();
+    values.clear();
+    slots.clear();
+    slot_columns.clear();
+    const auto &map      = layout.trilinos_vector().Map();
+    const auto  local_of = [&](const types::global_dof_index i) {
+      return map.LID(static_cast<TrilinosWrappers::types::int_type>(i));
+    };
+    bool                        all_owned = true;
+    std::map<int, unsigned int> slot_of;
+    for (const auto &line : homogeneous.get_lines())
+      if (owned.is_element(line.index))
+        {
+          rows.push_back(local_of(line.index));
+          for (const auto &[j, c] : line.entries)
+            {
+              const int column = local_of(j);
+              all_owned        = all_owned && column >= 0;
+              columns.push_back(column);
+              values.push_back(c);
+              const auto [at, added] =
+                slot_of.emplace(column, slot_columns.size());
+              if (added)
+                slot_columns.push_back(column);
+              slots.push_back(at->second);
+            }
+          start.push_back(columns.size());
+        }
+    local = Utilities::MPI::min(all_owned ? 1 : 0, comm) == 1;
+    slot_sums.resize(slot_columns.size());
+  }
+
+
+
+  void
+  ActiveSetSolver::transpose_distribute(const Condensation &homogeneous,
+                                        VectorType         &z) const
   {
     // z <- T^T z: every owned constrained entry z_i is added, times the
     // coefficient, to the entries z_j it depends on (possibly owned
     // elsewhere), and then set to zero.
-    add_to_masters(homogeneous, z);
+    if (homogeneous.local)
+      {
+        // the same sums as add_to_masters(): per column, the additions in
+        // the order of the lines, then added to z_j
+        double *const        z_local = z.begin();
+        std::vector<double> &sums    = homogeneous.slot_sums;
+        std::fill(sums.begin(), sums.end(), 0.);
+        for (unsigned int l = 0; l < homogeneous.rows.size(); ++l)
+          {
+            const double z_i = z_local[homogeneous.rows[l]];
+            for (unsigned int k = homogeneous.start[l];
+                 k < homogeneous.start[l + 1];
+                 ++k)
+              sums[homogeneous.slots[k]] += homogeneous.values[k] * z_i;
+          }
+        for (unsigned int s = 0; s < sums.size(); ++s)
+          z_local[homogeneous.slot_columns[s]] += sums[s];
+      }
+    else
+      add_to_masters(*homogeneous.constraints, z);
     zero_constrained(homogeneous, z);
   }
 
@@ -98,19 +163,46 @@ namespace dyncontact
 
 
   void
-  ActiveSetSolver::vmult_condensed(const AffineConstraints<double> &homogeneous,
-                                   VectorType                      &y,
-                                   const VectorType                &x) const
+  ActiveSetSolver::vmult_condensed(const Condensation &homogeneous,
+                                   VectorType         &y,
+                                   const VectorType   &x) const
   {
     Tx = x;
-    homogeneous.distribute(Tx);
+    if (homogeneous.local)
+      {
+        // T x: x_i = sum_j c_ij x_j on the constrained entries, summed as
+        // AffineConstraints::distribute() does
+        double *const Tx_local = Tx.begin();
+        for (unsigned int l = 0; l < homogeneous.rows.size(); ++l)
+          {
+            double value = 0.;
+            for (unsigned int k = homogeneous.start[l];
+                 k < homogeneous.start[l + 1];
+                 ++k)
+              value += Tx_local[homogeneous.columns[k]] * homogeneous.values[k];
+            Tx_local[homogeneous.rows[l]] = value;
+          }
+      }
+    else
+      homogeneous.constraints->distribute(Tx);
     vmult_H(y, Tx);
     transpose_distribute(homogeneous, y);
     // constrained entries: identity scaled by H's diagonal (they stay zero)
-    for (const auto &line : homogeneous.get_lines())
-      if (locally_owned.is_element(line.index))
-        y(line.index) = diagonal(line.index) * x(line.index);
-    y.compress(VectorOperation::insert);
+    if (homogeneous.local)
+      {
+        double *const       y_local        = y.begin();
+        const double *const x_local        = x.begin();
+        const double *const diagonal_local = diagonal.begin();
+        for (const int i : homogeneous.rows)
+          y_local[i] = diagonal_local[i] * x_local[i];
+      }
+    else
+      {
+        for (const auto &line : homogeneous.constraints->get_lines())
+          if (locally_owned.is_element(line.index))
+            y(line.index) = diagonal(line.index) * x(line.index);
+        y.compress(VectorOperation::insert);
+      }
   }
 
 
@@ -165,9 +257,11 @@ namespace dyncontact
                                        Result                  &result,
                                        Scratch                 &scratch) const
   {
-    AffineConstraints<double> constraints, homogeneous;
+    AffineConstraints<double> constraints, homogeneous_constraints;
     make_constraints(active, constraints, false);
-    make_constraints(active, homogeneous, true);
+    make_constraints(active, homogeneous_constraints, true);
+    Condensation homogeneous;
+    homogeneous.reinit(homogeneous_constraints, r, locally_owned, comm);
 
     // k: the inhomogeneities (v = T x + k)
     VectorType &k = scratch.k, &b = scratch.b, &x = scratch.x;
@@ -196,8 +290,8 @@ namespace dyncontact
 
     struct Operator
     {
-      const ActiveSetSolver           *solver;
-      const AffineConstraints<double> *homogeneous;
+      const ActiveSetSolver *solver;
+      const Condensation    *homogeneous;
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
@@ -207,8 +301,8 @@ namespace dyncontact
 
     struct Preconditioner
     {
-      const ActiveSetSolver           *solver;
-      const AffineConstraints<double> *homogeneous;
+      const ActiveSetSolver *solver;
+      const Condensation    *homogeneous;
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
@@ -309,11 +403,17 @@ namespace dyncontact
 
 
   void
-  ActiveSetSolver::zero_constrained(
-    const AffineConstraints<double> &homogeneous,
-    VectorType                      &x) const
+  ActiveSetSolver::zero_constrained(const Condensation &homogeneous,
+                                    VectorType         &x) const
   {
-    for (const auto &line : homogeneous.get_lines())
+    if (homogeneous.local)
+      {
+        double *const x_local = x.begin();
+        for (const int i : homogeneous.rows)
+          x_local[i] = 0.;
+        return;
+      }
+    for (const auto &line : homogeneous.constraints->get_lines())
       if (locally_owned.is_element(line.index))
         x(line.index) = 0.;
     x.compress(VectorOperation::insert);
@@ -322,10 +422,9 @@ namespace dyncontact
 
 
   void
-  ActiveSetSolver::precondition_condensed(
-    const AffineConstraints<double> &homogeneous,
-    VectorType                      &y,
-    const VectorType                &x) const
+  ActiveSetSolver::precondition_condensed(const Condensation &homogeneous,
+                                          VectorType         &y,
+                                          const VectorType   &x) const
   {
     if (amg)
       amg->vmult(y, x);

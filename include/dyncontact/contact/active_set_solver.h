@@ -250,22 +250,56 @@ namespace dyncontact
                      AffineConstraints<double> &constraints,
                      const bool                 homogeneous) const;
 
+    /**
+     * The homogeneous constraints T of one solve on an active set, and
+     * their owned lines in the local indices of the owned vectors, for what
+     * CG does with them at every iteration (T x, T^T z, zeroing) without
+     * deal.II's access by global index (an Epetra lookup per entry) and
+     * without communication. That is taken where no rank has a line with
+     * an entry owned elsewhere (@p local, the same on every rank);
+     * otherwise the AffineConstraints are used. Both give the same numbers,
+     * summed in the same order.
+     */
+    struct Condensation
+    {
+      /// Collective.
+      void
+      reinit(const AffineConstraints<double> &constraints,
+             const VectorType                &layout,
+             const IndexSet                  &owned,
+             const MPI_Comm                   comm);
+
+      const AffineConstraints<double> *constraints = nullptr;
+      bool                             local       = false;
+      /// the owned lines' local indices; the entries of line l are
+      /// [start[l], start[l + 1]) of columns (local indices) and values
+      std::vector<int>          rows;
+      std::vector<unsigned int> start;
+      std::vector<int>          columns;
+      std::vector<double>       values;
+      /// T^T: each entry's slot among the distinct columns (slot_columns),
+      /// whose additions are summed in a slot before they are added to the
+      /// column, as deal.II's vector of additions does
+      std::vector<unsigned int>   slots;
+      std::vector<int>            slot_columns;
+      mutable std::vector<double> slot_sums;
+    };
+
     /// y = T^T H T x on unconstrained entries, y_i = x_i on constrained ones.
     void
-    vmult_condensed(const AffineConstraints<double> &homogeneous,
-                    VectorType                      &y,
-                    const VectorType                &x) const;
+    vmult_condensed(const Condensation &homogeneous,
+                    VectorType         &y,
+                    const VectorType   &x) const;
 
     /// y = P^{-1} x (AMG, or Jacobi) with the constrained entries zero.
     void
-    precondition_condensed(const AffineConstraints<double> &homogeneous,
-                           VectorType                      &y,
-                           const VectorType                &x) const;
+    precondition_condensed(const Condensation &homogeneous,
+                           VectorType         &y,
+                           const VectorType   &x) const;
 
     /// Sets the constrained entries of @p x to zero.
     void
-    zero_constrained(const AffineConstraints<double> &homogeneous,
-                     VectorType                      &x) const;
+    zero_constrained(const Condensation &homogeneous, VectorType &x) const;
 
     /// The next active set: row p is active where mu_p + c_p (C v - g)_p >
     /// c_p delta; the displacement tolerance delta (returned in @p delta,
@@ -281,8 +315,7 @@ namespace dyncontact
 
     /// y = T^T z: adds constrained entries to the entries they depend on.
     void
-    transpose_distribute(const AffineConstraints<double> &homogeneous,
-                         VectorType                      &z) const;
+    transpose_distribute(const Condensation &homogeneous, VectorType &z) const;
     /// z_j += c_ij z_i for every owned constrained entry i of @p constraints
     /// and its entries (c_ij, j), possibly owned elsewhere (collective).
     void
