@@ -638,13 +638,15 @@ main(int argc, char **argv)
           << " cases handled\n";
   log() << "\n";
 
-  // a damaged last checkpoint: the refusal names the one before it (kept
-  // beside it) and how to resume from it; done as it says, the run resumes
-  // from that one
+  // a damaged last checkpoint, beside it the one before and a newer folder
+  // left incomplete by a crash while writing: the refusal names the one
+  // before (the newest that passes the checks) and how to resume from it;
+  // done as it says, the run resumes from that one
   {
     fs::remove_all("ck");
     fs::copy("ck_pristine", "ck", fs::copy_options::recursive);
     damages.at("flip data")();
+    fs::create_directories("ck/checkpoints/step_0099999");
     std::ofstream("case.prm") << base << resume;
     const Outcome     refused = run_program("case.prm");
     const std::string advice  = "', is kept beside it";
@@ -655,13 +657,13 @@ main(int argc, char **argv)
     const bool named_previous =
       refused.status != 0 && !previous.empty() &&
       fs::is_directory("ck/checkpoints/" + previous) &&
-      "ck/checkpoints/" + previous != ck_step &&
-      refused.text.find("echo " + previous + " > ck/checkpoints/last") !=
+      "ck/checkpoints/" + previous != ck_step && previous != "step_0099999" &&
+      refused.text.find("echo " + previous + " > 'ck/checkpoints/last'") !=
         std::string::npos;
     std::ofstream("ck/checkpoints/last") << previous << "\n";
     const Outcome resumed = run_program("case.prm");
-    log() << "damaged last checkpoint: the refusal names the one before it "
-             "and how to resume from it: "
+    log() << "damaged last checkpoint (and a newer incomplete one): the "
+             "refusal names the one before it and how to resume from it: "
           << check(named_previous) << "; done so, the run resumes from it: "
           << check(resumed.status == 0 &&
                    resumed.text.find("resumed from ck/checkpoints/" +

@@ -209,37 +209,20 @@ namespace dyncontact
   Checkpoints::read_state(const std::string &dir) const
   {
     // rank 0 verifies every file of the checkpoint before anything is read
+    // (what throws there becomes the message, which every rank then stops
+    // with, instead of rank 0 alone)
     std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        problem = verify(dir);
-        if (!problem.empty())
-          {
-            // the previous checkpoint, kept beside the last one: how to
-            // resume from it (the last one is not removed behind the user's
-            // back, nor silently replaced by an older state)
-            std::string       previous;
-            std::error_code   error; // (an unreadable folder: no advice)
-            const std::string last_name = std::filesystem::path(dir).filename();
-            for (const auto &entry :
-                 std::filesystem::directory_iterator(root, error))
-              {
-                const std::string name = entry.path().filename();
-                if (entry.is_directory() && name.rfind("step_", 0) == 0 &&
-                    name != last_name && name > previous)
-                  previous = name;
-              }
-            problem +=
-              previous.empty() ?
-                ". There is no other checkpoint beside it: start afresh "
-                "(Checkpointing/Resume = false)." :
-                ". The newest other checkpoint, '" + previous +
-                  "', is kept beside it: to resume from that one, write its "
-                  "name into '" +
-                  root + "/last' (echo " + previous + " > " + root +
-                  "/last); or start afresh (Checkpointing/Resume = false).";
-          }
-      }
+      try
+        {
+          problem = verify(dir);
+          if (!problem.empty())
+            problem += advice_beside(dir);
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     AssertThrow(problem.empty(),
                 ExcMessage("Checkpointing/Resume: the checkpoint '" + dir +
@@ -291,6 +274,54 @@ namespace dyncontact
                                       const std::string &value)
   {
     critical_parameters += name + " = " + value + "\n";
+  }
+
+
+
+  std::string
+  Checkpoints::advice_beside(const std::string &dir) const
+  {
+    // the newest other checkpoint that passes the checks (a crash while
+    // writing may have left a newer, incomplete folder): how to resume from
+    // it. The refused one is not removed behind the user's back, nor
+    // silently replaced by an older state.
+    std::map<unsigned long, std::string> others; // by step, newest last
+    const std::string refused = std::filesystem::path(dir).filename();
+    std::error_code   error; // an unreadable folder: no advice
+    for (auto entry = std::filesystem::directory_iterator(root, error);
+         !error && entry != std::filesystem::directory_iterator();
+         entry.increment(error))
+      {
+        const std::string name = entry->path().filename();
+        if (name != refused && name.rfind("step_", 0) == 0 && name.size() > 5 &&
+            name.find_first_not_of("0123456789", 5) == std::string::npos &&
+            name.size() < 5 + 19)
+          {
+            std::error_code not_a_directory;
+            if (entry->is_directory(not_a_directory))
+              others[std::stoul(name.substr(5))] = name;
+          }
+      }
+    const auto passes = [&](const std::string &name) {
+      try
+        {
+          return verify(root + "/" + name).empty();
+        }
+      catch (const std::exception &)
+        {
+          return false;
+        }
+    };
+    for (auto other = others.rbegin(); other != others.rend(); ++other)
+      if (passes(other->second))
+        return ". The newest other checkpoint that passes the checks, '" +
+               other->second +
+               "', is kept beside it: to resume from that one, write its "
+               "name into '" +
+               root + "/last' (echo " + other->second + " > '" + root +
+               "/last'); or start afresh (Checkpointing/Resume = false).";
+    return ". There is no other checkpoint beside it that passes the "
+           "checks: start afresh (Checkpointing/Resume = false).";
   }
 
 

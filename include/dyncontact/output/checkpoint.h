@@ -30,8 +30,8 @@ namespace dyncontact
    * run must agree with the checkpoint in its critical parameters (all but
    * End time, Output directory, Output, Checkpointing, Time step adaptation
    * and the solver's iteration limits). A checkpoint that fails the checks
-   * is refused with what is wrong, and with the name of the checkpoint
-   * before it (kept beside it) and how to resume from that one.
+   * is refused with what is wrong, and with the name of the newest other
+   * checkpoint beside it that passes the checks and how to resume from it.
    */
   class Checkpoints
   {
@@ -103,6 +103,12 @@ namespace dyncontact
     /// checksums in its state.txt: "" if all is well, else what is wrong.
     static std::string
     verify(const std::string &directory);
+
+    /// What to do instead of resuming from the refused checkpoint
+    /// @p directory: the newest other checkpoint beside it that verify()
+    /// passes, and how to resume from it; or to start afresh.
+    std::string
+    advice_beside(const std::string &directory) const;
 
     std::string  root;
     MPI_Comm     comm             = MPI_COMM_SELF;
