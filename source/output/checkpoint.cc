@@ -21,6 +21,17 @@ namespace dyncontact
       "End time, Time step adaptation, the Contact solver's Maximum "
       "active-set iterations and Maximum linear iterations, Output directory, "
       "subsection Output and subsection Checkpointing";
+
+    /// @p name without leading and trailing blanks and carriage returns (a
+    /// file 'last' written by hand may carry them).
+    std::string
+    trimmed(const std::string &name)
+    {
+      const auto first = name.find_first_not_of(" \t\r");
+      if (first == std::string::npos)
+        return "";
+      return name.substr(first, name.find_last_not_of(" \t\r") + 1 - first);
+    }
   } // namespace
 
 
@@ -167,7 +178,10 @@ namespace dyncontact
           const std::string name = std::filesystem::path(dir).filename();
           std::string       previous;
           if (std::ifstream last(root + "/last"); last.good())
-            std::getline(last, previous);
+            {
+              std::getline(last, previous);
+              previous = trimmed(previous);
+            }
           std::ofstream last(root + "/last.tmp");
           last << name << "\n";
           last.close();
@@ -200,7 +214,7 @@ namespace dyncontact
                            "' (the file 'last' that marks the last good "
                            "one is missing)."));
     std::getline(last, name);
-    return root + "/" + name;
+    return root + "/" + trimmed(name);
   }
 
 
@@ -318,8 +332,12 @@ namespace dyncontact
                other->second +
                "', is kept beside it: to resume from that one, write its "
                "name into '" +
-               root + "/last' (echo " + other->second + " > '" + root +
-               "/last'); or start afresh (Checkpointing/Resume = false).";
+               root + "/last'" +
+               // a command to paste, where quoting the path is simple
+               (root.find('\'') == std::string::npos ?
+                  " (echo " + other->second + " > '" + root + "/last')" :
+                  std::string()) +
+               "; or start afresh (Checkpointing/Resume = false).";
     return ". There is no other checkpoint beside it that passes the "
            "checks: start afresh (Checkpointing/Resume = false).";
   }

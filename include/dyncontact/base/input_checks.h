@@ -95,8 +95,9 @@ namespace dyncontact
             << (entry == state.end() ? std::string("missing") :
                                        "'" + entry->second + "'")
             << ") is not a finite number in [" << min << ", " << max
-            << "]: the checkpoint is damaged. Resume from another one (the "
-               "previous checkpoint is kept next to it) or start afresh.";
+            << "]: the checkpoint is damaged. Resume from another one, if "
+               "one is kept beside it (write its folder's name into the file "
+               "'last' of the checkpoints), or start afresh.";
     AssertThrow(false, dealii::ExcMessage(message.str()));
     return value;
   }
