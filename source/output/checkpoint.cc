@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -22,11 +23,17 @@ namespace dyncontact
       "active-set iterations and Maximum linear iterations, Output directory, "
       "subsection Output and subsection Checkpointing";
 
-    /// @p name without leading and trailing blanks and carriage returns (a
-    /// file 'last' written by hand may carry them).
-    std::string
-    trimmed(const std::string &name)
+    /// The folder name in the file 'last' of the checkpoints in @p root,
+    /// without leading and trailing blanks and carriage returns (a file
+    /// written by hand may carry them); nullopt if there is no such file.
+    std::optional<std::string>
+    last_name(const std::string &root)
     {
+      std::ifstream last(root + "/last");
+      if (!last.good())
+        return std::nullopt;
+      std::string name;
+      std::getline(last, name);
       const auto first = name.find_first_not_of(" \t\r");
       if (first == std::string::npos)
         return "";
@@ -175,14 +182,9 @@ namespace dyncontact
                       ExcMessage("Cannot write the checkpoint '" + dir + "'."));
           // mark it as the last good checkpoint (atomically), then remove all
           // but the previous one
-          const std::string name = std::filesystem::path(dir).filename();
-          std::string       previous;
-          if (std::ifstream last(root + "/last"); last.good())
-            {
-              std::getline(last, previous);
-              previous = trimmed(previous);
-            }
-          std::ofstream last(root + "/last.tmp");
+          const std::string name     = std::filesystem::path(dir).filename();
+          const std::string previous = last_name(root).value_or("");
+          std::ofstream     last(root + "/last.tmp");
           last << name << "\n";
           last.close();
           AssertThrow(last.good(),
@@ -206,15 +208,13 @@ namespace dyncontact
   std::string
   Checkpoints::last_directory() const
   {
-    std::string   name;
-    std::ifstream last(root + "/last");
-    AssertThrow(last.good(),
+    const std::optional<std::string> name = last_name(root);
+    AssertThrow(name.has_value(),
                 ExcMessage("Checkpointing/Resume: there is no checkpoint in '" +
                            root +
                            "' (the file 'last' that marks the last good "
                            "one is missing)."));
-    std::getline(last, name);
-    return root + "/" + trimmed(name);
+    return root + "/" + *name;
   }
 
 

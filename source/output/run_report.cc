@@ -142,13 +142,12 @@ namespace dyncontact
     input.matrix_free         = integrator.matrix_free();
     input.inertia_ratio       = integrator.inertia_ratio();
     input.condition_bound     = integrator.condition_bound();
-    input.ranks_and_mesh =
-      std::to_string(
-        Utilities::MPI::n_mpi_processes(this->get_mpi_communicator())) +
-      " MPI rank(s), " +
-      (this->get_parameters().serial_triangulation ?
-         "serial triangulation" :
-         "distributed triangulation (p4est)");
+    input.ranks_and_mesh      = std::to_string(Utilities::MPI::n_mpi_processes(
+                             this->get_mpi_communicator())) +
+                           " MPI rank(s), " +
+                           (this->get_parameters().serial_triangulation ?
+                              "serial triangulation" :
+                              "distributed triangulation (p4est)");
     const std::string text =
       summary_text(this->get_statistics(), input, statistics_lines(input));
     const std::string file =

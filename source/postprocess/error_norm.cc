@@ -109,9 +109,9 @@ namespace dyncontact
         // midpoint, and iterated twice it has points at 1/4 and 3/4 of the
         // cell, where a front moving h/(2p) per step (tau = h/(2pc), p even)
         // lands at some steps (every other one for p = 2, every fourth for
-        // p = 4): the exact solution would be sampled on
-        // either side of its jump, by the last bits of t and x. So the
-        // number of points is even: p + 1 for odd p, p + 2 for even p.
+        // p = 4): the exact solution would be sampled on either side of its
+        // jump, by the last bits of t and x. So the number of points is
+        // even: p + 1 for odd p, p + 2 for even p.
         const unsigned int   degree = system.get_fe().degree;
         const QIterated<dim> quadrature(QGauss<1>(degree % 2 == 1 ? degree + 1 :
                                                                     degree + 2),
