@@ -40,7 +40,9 @@ namespace dyncontact
                  "this run has " +
                  std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
                  " ranks: run it on one rank, or set "
-                 "'Triangulation' to distributed."));
+                 "'Triangulation' to distributed (a run resumed from "
+                 "a checkpoint keeps the triangulation it was written "
+                 "with: resume a serial one on one rank)."));
     solver_parameters.parse_parameters(prm);
     AssertThrow(!(scheme.is_static && numerical_dissipation > 0.),
                 ExcMessage("Time integration/Numerical dissipation > 0 is "
@@ -342,7 +344,6 @@ namespace dyncontact
                                    const std::function<void()> &mark_cells,
                                    TimerOutput                 &timer)
   {
-    const double energy_before = system->total_energy(u, udot);
     {
       TimerOutput::Scope t(timer, "adaptation: indicators and flags");
       mark_cells();
@@ -359,6 +360,9 @@ namespace dyncontact
       if (Utilities::MPI::logical_or(changes, comm) == false)
         return {0., 0.};
     }
+    // (only where the mesh changes: an adaptation that marks no cell
+    // costs no energy evaluation)
+    const double energy_before = system->total_energy(u, udot);
     {
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       // transfer u and udot to the new mesh (p4est also repartitions it)
