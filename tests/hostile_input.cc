@@ -360,6 +360,11 @@ main(int argc, char **argv)
          "the folder does not exist",
          "bad last"},
     {"checkpoint",
+         "'last' deleted, checkpoints kept",
+         resume,
+         "The newest checkpoint that passes the checks is 'step_",
+         "delete last"},
+    {"checkpoint",
          "no checkpoint at all",
          resume,
          "no checkpoint",
@@ -588,6 +593,7 @@ main(int argc, char **argv)
        std::ofstream(ck_step + "/state.txt") << text;
      }},
     {"bad last", [&] { std::ofstream("ck/checkpoints/last") << "step_9\n"; }},
+    {"delete last", [&] { fs::remove("ck/checkpoints/last"); }},
     {"delete all", [&] { fs::remove_all("ck/checkpoints"); }},
     {"edit gmsh mesh", [&] {
        std::string mesh = read("edited.msh");

@@ -209,11 +209,29 @@ namespace dyncontact
   Checkpoints::last_directory() const
   {
     const std::optional<std::string> name = last_name(root);
-    AssertThrow(name.has_value(),
-                ExcMessage("Checkpointing/Resume: there is no checkpoint in '" +
-                           root +
-                           "' (the file 'last' that marks the last good "
-                           "one is missing)."));
+    if (!name.has_value())
+      {
+        // (a 'last' lost while checkpoints that pass the checks are there:
+        // the newest of them is named, not taken without being asked)
+        std::string advice;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          try
+            {
+              advice = advice_beside("");
+            }
+          catch (const std::exception &)
+            {
+              advice = ".";
+            }
+        advice = Utilities::MPI::broadcast(comm, advice, 0);
+        AssertThrow(false,
+                    ExcMessage("Checkpointing/Resume: there is no checkpoint "
+                               "to resume from in '" +
+                               root +
+                               "': the file 'last' that names the last good "
+                               "one is missing" +
+                               advice));
+      }
     return root + "/" + *name;
   }
 
@@ -300,8 +318,10 @@ namespace dyncontact
     // it. The refused one is not removed behind the user's back, nor
     // silently replaced by an older state.
     std::map<unsigned long, std::string> others; // by step, newest last
-    const std::string refused = std::filesystem::path(dir).filename();
-    std::error_code   error; // an unreadable folder: no advice
+    const std::string                    refused =
+      dir.empty() ? std::string() :
+                                       std::string(std::filesystem::path(dir).filename());
+    std::error_code error; // an unreadable folder: no advice
     for (auto entry = std::filesystem::directory_iterator(root, error);
          !error && entry != std::filesystem::directory_iterator();
          entry.increment(error))
@@ -328,18 +348,26 @@ namespace dyncontact
     };
     for (auto other = others.rbegin(); other != others.rend(); ++other)
       if (passes(other->second))
-        return ". The newest other checkpoint that passes the checks, '" +
-               other->second +
-               "', is kept beside it: to resume from that one, write its "
-               "name into '" +
-               root + "/last'" +
+        return (dir.empty() ?
+                  ". The newest checkpoint that passes the checks is '" +
+                    other->second + "': to resume from it, write its " :
+                  ". The newest other checkpoint that passes the checks, '" +
+                    other->second +
+                    "', is kept beside it: to resume from that one, write "
+                    "its ") +
+               "name into '" + root + "/last'" +
                // a command to paste, where quoting the path is simple
                (root.find('\'') == std::string::npos ?
                   " (echo " + other->second + " > '" + root + "/last')" :
                   std::string()) +
                "; or start afresh (Checkpointing/Resume = false).";
-    return ". There is no other checkpoint beside it that passes the "
-           "checks: start afresh (Checkpointing/Resume = false).";
+    if (!dir.empty())
+      return ". There is no other checkpoint beside it that passes the "
+             "checks: start afresh (Checkpointing/Resume = false).";
+    return std::string(others.empty() ?
+                         ". It holds no checkpoint folder" :
+                         ". No checkpoint folder in it passes the checks") +
+           ": start afresh (Checkpointing/Resume = false).";
   }
 
 

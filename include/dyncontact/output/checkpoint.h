@@ -106,7 +106,8 @@ namespace dyncontact
 
     /// What to do instead of resuming from the refused checkpoint
     /// @p directory: the newest other checkpoint beside it that verify()
-    /// passes, and how to resume from it; or to start afresh.
+    /// passes, and how to resume from it; or to start afresh. With an
+    /// empty @p directory (the file 'last' is missing): the newest of all.
     std::string
     advice_beside(const std::string &directory) const;
 
