@@ -71,7 +71,8 @@ namespace dyncontact
     const AffineConstraints<double> &homogeneous,
     const VectorType                &layout,
     const IndexSet                  &owned,
-    const MPI_Comm                   comm)
+    const MPI_Comm                   comm,
+    const AffineConstraints<double> *inhomogeneous_constraints)
   {
     // (all vectors of the solve have this layout: owned entries only)
     Assert(!layout.has_ghost_elements(), ExcInternalError());
@@ -108,6 +109,88 @@ namespace dyncontact
         }
     local = Utilities::MPI::min(all_owned ? 1 : 0, comm) == 1;
     slot_sums.resize(slot_columns.size());
+
+    // the inhomogeneities, where the owned lines are the same (close()
+    // resolves chains with the same coefficients whatever the
+    // inhomogeneities; checked entry by entry, else deal.II distributes)
+    inhomogeneous = nullptr;
+    inhomogeneities.clear();
+    if (!local || inhomogeneous_constraints == nullptr)
+      return;
+    unsigned int l    = 0;
+    bool         same = true;
+    for (const auto &line : inhomogeneous_constraints->get_lines())
+      if (owned.is_element(line.index))
+        {
+          same = same && l < rows.size() && rows[l] == local_of(line.index) &&
+                 line.entries.size() == start[l + 1] - start[l];
+          for (unsigned int k = 0; same && k < line.entries.size(); ++k)
+            same = columns[start[l] + k] == local_of(line.entries[k].first) &&
+                   values[start[l] + k] == line.entries[k].second;
+          if (!same)
+            break;
+          inhomogeneities.push_back(line.inhomogeneity);
+          ++l;
+        }
+    if (same && l == rows.size())
+      inhomogeneous = inhomogeneous_constraints;
+    else
+      inhomogeneities.clear();
+  }
+
+
+
+  const ActiveSetSolver::ActiveSetConstraints &
+  ActiveSetSolver::constraints_of(const std::vector<char> &active,
+                                  const VectorType        &layout) const
+  {
+    const bool same = Utilities::MPI::min((last_constraints &&
+                                           last_constraints->active == active) ?
+                                            1 :
+                                            0,
+                                          comm) == 1;
+    if (!same)
+      {
+        last_constraints.reset();
+        auto c    = std::make_unique<ActiveSetConstraints>();
+        c->active = active;
+        make_constraints(active, c->constraints, false);
+        make_constraints(active, c->homogeneous_constraints, true);
+        c->homogeneous.reinit(c->homogeneous_constraints,
+                              layout,
+                              locally_owned,
+                              comm,
+                              &c->constraints);
+        last_constraints = std::move(c);
+      }
+    return *last_constraints;
+  }
+
+
+
+  void
+  ActiveSetSolver::distribute_inhomogeneous(
+    const ActiveSetConstraints &constraints,
+    VectorType                 &v) const
+  {
+    const Condensation &homogeneous = constraints.homogeneous;
+    if (homogeneous.inhomogeneous == nullptr)
+      {
+        constraints.constraints.distribute(v);
+        return;
+      }
+    // v_i = k_i + sum_j v_j c_ij, in the order of
+    // AffineConstraints::distribute() (the entries are unconstrained)
+    double *const v_local = v.begin();
+    for (unsigned int l = 0; l < homogeneous.rows.size(); ++l)
+      {
+        double value = homogeneous.inhomogeneities[l];
+        for (unsigned int k = homogeneous.start[l];
+             k < homogeneous.start[l + 1];
+             ++k)
+          value += v_local[homogeneous.columns[k]] * homogeneous.values[k];
+        v_local[homogeneous.rows[l]] = value;
+      }
   }
 
 
@@ -257,16 +340,13 @@ namespace dyncontact
                                        Result                  &result,
                                        Scratch                 &scratch) const
   {
-    AffineConstraints<double> constraints, homogeneous_constraints;
-    make_constraints(active, constraints, false);
-    make_constraints(active, homogeneous_constraints, true);
-    Condensation homogeneous;
-    homogeneous.reinit(homogeneous_constraints, r, locally_owned, comm);
+    const ActiveSetConstraints &constraints = constraints_of(active, r);
+    const Condensation         &homogeneous = constraints.homogeneous;
 
     // k: the inhomogeneities (v = T x + k)
     VectorType &k = scratch.k, &b = scratch.b, &x = scratch.x;
     k = 0.;
-    constraints.distribute(k);
+    distribute_inhomogeneous(constraints, k);
 
     // b = T^T (r - H k)
     if (any_active)
@@ -325,7 +405,7 @@ namespace dyncontact
     result.linear_iterations += control.last_step();
 
     v = x;
-    constraints.distribute(v);
+    distribute_inhomogeneous(constraints, v);
     return true;
   }
 

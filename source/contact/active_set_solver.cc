@@ -262,6 +262,7 @@ namespace dyncontact
     H                = nullptr;
     H_operator       = nullptr;
     H_preconditioner = nullptr;
+    last_constraints.reset();
   }
 
 
