@@ -362,7 +362,7 @@ main(int argc, char **argv)
     {"checkpoint",
          "'last' deleted, checkpoints kept",
          resume,
-         "The newest checkpoint that passes the checks is 'step_",
+         "The newest checkpoint there that passes the checks is 'step_",
          "delete last"},
     {"checkpoint",
          "no checkpoint at all",

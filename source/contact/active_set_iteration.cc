@@ -115,6 +115,7 @@ namespace dyncontact
     // inhomogeneities; checked entry by entry, else deal.II distributes)
     inhomogeneous = nullptr;
     inhomogeneities.clear();
+    // (local and the argument are the same on every rank)
     if (!local || inhomogeneous_constraints == nullptr)
       return;
     unsigned int l    = 0;
@@ -132,7 +133,8 @@ namespace dyncontact
           inhomogeneities.push_back(line.inhomogeneity);
           ++l;
         }
-    if (same && l == rows.size())
+    // (on every rank alike: the other path's distribute() is collective)
+    if (Utilities::MPI::min((same && l == rows.size()) ? 1 : 0, comm) == 1)
       inhomogeneous = inhomogeneous_constraints;
     else
       inhomogeneities.clear();

@@ -208,31 +208,34 @@ namespace dyncontact
   std::string
   Checkpoints::last_directory() const
   {
-    const std::optional<std::string> name = last_name(root);
-    if (!name.has_value())
+    // rank 0 reads 'last' and, without it, looks for what to advise: every
+    // rank takes the same branch
+    std::string name_or_advice;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        // (a 'last' lost while checkpoints that pass the checks are there:
-        // the newest of them is named, not taken without being asked)
-        std::string advice;
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
+        const std::optional<std::string> name = last_name(root);
+        if (name.has_value())
+          name_or_advice = "+" + *name;
+        else
+          // (a 'last' lost while checkpoints that pass the checks are
+          // there: the newest of them is named, not taken without being
+          // asked)
           try
             {
-              advice = advice_beside("");
+              name_or_advice = "-" + advice_beside("");
             }
           catch (const std::exception &)
             {
-              advice = ".";
+              name_or_advice = "-.";
             }
-        advice = Utilities::MPI::broadcast(comm, advice, 0);
-        AssertThrow(false,
-                    ExcMessage("Checkpointing/Resume: there is no checkpoint "
-                               "to resume from in '" +
-                               root +
-                               "': the file 'last' that names the last good "
-                               "one is missing" +
-                               advice));
       }
-    return root + "/" + *name;
+    name_or_advice = Utilities::MPI::broadcast(comm, name_or_advice, 0);
+    AssertThrow(name_or_advice[0] == '+',
+                ExcMessage("Checkpointing/Resume: the file 'last', which "
+                           "names the checkpoint to resume from, is missing "
+                           "in '" +
+                           root + "'" + name_or_advice.substr(1)));
+    return root + "/" + name_or_advice.substr(1);
   }
 
 
@@ -349,7 +352,7 @@ namespace dyncontact
     for (auto other = others.rbegin(); other != others.rend(); ++other)
       if (passes(other->second))
         return (dir.empty() ?
-                  ". The newest checkpoint that passes the checks is '" +
+                  ". The newest checkpoint there that passes the checks is '" +
                     other->second + "': to resume from it, write its " :
                   ". The newest other checkpoint that passes the checks, '" +
                     other->second +
@@ -360,13 +363,15 @@ namespace dyncontact
                (root.find('\'') == std::string::npos ?
                   " (echo " + other->second + " > '" + root + "/last')" :
                   std::string()) +
-               "; or start afresh (Checkpointing/Resume = false).";
+               "; or start afresh (Checkpointing/Resume = false), whose "
+               "first checkpoint replaces the checkpoints there: give it "
+               "another Output directory to keep them.";
     if (!dir.empty())
       return ". There is no other checkpoint beside it that passes the "
              "checks: start afresh (Checkpointing/Resume = false).";
     return std::string(others.empty() ?
-                         ". It holds no checkpoint folder" :
-                         ". No checkpoint folder in it passes the checks") +
+                         ". There is no checkpoint folder there" :
+                         ". No checkpoint folder there passes the checks") +
            ": start afresh (Checkpointing/Resume = false).";
   }
 

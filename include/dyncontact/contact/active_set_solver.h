@@ -302,6 +302,12 @@ namespace dyncontact
      */
     struct ActiveSetConstraints
     {
+      ActiveSetConstraints() = default;
+      /// (the Condensation points into this object)
+      ActiveSetConstraints(const ActiveSetConstraints &) = delete;
+      ActiveSetConstraints &
+      operator=(const ActiveSetConstraints &) = delete;
+
       std::vector<char>         active;
       AffineConstraints<double> constraints, homogeneous_constraints;
       Condensation              homogeneous;
