@@ -163,6 +163,14 @@ namespace dyncontact
                               locally_owned,
                               comm,
                               &c->constraints);
+        // where the local form does all (on every rank), the
+        // AffineConstraints are not read again: their memory (lines and an
+        // index cache over the relevant DoFs, per solver) is released
+        if (c->homogeneous.inhomogeneous != nullptr)
+          {
+            c->constraints.clear();
+            c->homogeneous_constraints.clear();
+          }
         last_constraints = std::move(c);
       }
     return *last_constraints;

@@ -287,7 +287,8 @@ namespace dyncontact
       std::vector<int>            slot_columns;
       mutable std::vector<double> slot_sums;
       /// the inhomogeneous constraints and each owned line's inhomogeneity
-      /// (empty unless local and reinit() was given them)
+      /// (empty unless local and reinit() was given them; then neither
+      /// AffineConstraints is read again, and constraints_of() clears both)
       const AffineConstraints<double> *inhomogeneous = nullptr;
       std::vector<double>              inhomogeneities;
     };
