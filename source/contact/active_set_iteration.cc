@@ -260,6 +260,11 @@ namespace dyncontact
                                    VectorType         &y,
                                    const VectorType   &x) const
   {
+    // (Tx takes x's map: between vectors whose maps were made apart,
+    // deal.II copies through an Epetra_Import built anew at each copy)
+    if (Tx.trilinos_vector().Map().DataPtr() !=
+        x.trilinos_vector().Map().DataPtr())
+      Tx.reinit(x, true);
     Tx = x;
     if (homogeneous.local)
       {

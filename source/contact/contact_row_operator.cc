@@ -2,6 +2,8 @@
 
 #include <dyncontact/contact/contact_row_operator.h>
 
+#include <Epetra_Import.h>
+
 namespace dyncontact
 {
   ContactRowOperator::ContactRowOperator(const MPI_Comm comm)
@@ -38,6 +40,7 @@ namespace dyncontact
     row_dofs.add_indices(touched.begin(), touched.end());
     row_dofs.compress();
     ghosted_row_dofs.reinit(owned, row_dofs, comm);
+    row_import.reset();
     contact_rows = &rows;
   }
 
@@ -46,7 +49,20 @@ namespace dyncontact
   const VectorType &
   ContactRowOperator::with_row_ghosts(const VectorType &v) const
   {
-    ghosted_row_dofs = v;
+    // what deal.II's assignment does between different maps (an import
+    // with Insert), with the import kept for the next v of the same map
+    // (the import holds its source map, whose data cannot be freed and
+    // reused by another map while it is kept)
+    const Epetra_BlockMap &source = v.trilinos_vector().Map();
+    if (row_import == nullptr ||
+        row_import->SourceMap().DataPtr() != source.DataPtr())
+      row_import = std::make_shared<Epetra_Import>(
+        ghosted_row_dofs.trilinos_vector().Map(), source);
+    const int error =
+      ghosted_row_dofs.trilinos_vector().Import(v.trilinos_vector(),
+                                                *row_import,
+                                                Insert);
+    AssertThrow(error == 0, ExcMessage("Epetra_Import failed."));
     return ghosted_row_dofs;
   }
 

@@ -7,7 +7,10 @@
 
 #include <dyncontact/contact/contact_rows.h>
 
+#include <memory>
 #include <vector>
+
+class Epetra_Import;
 
 namespace dyncontact
 {
@@ -71,6 +74,9 @@ namespace dyncontact
     const ContactRows *contact_rows = nullptr;
     /// v with the ghost entries of the rows' DoFs (with_row_ghosts())
     mutable VectorType ghosted_row_dofs;
+    /// the import into it from the map of the last v (kept: deal.II's
+    /// assignment builds one at every copy); it holds that map
+    mutable std::shared_ptr<Epetra_Import> row_import;
   };
 } // namespace dyncontact
 
