@@ -34,10 +34,17 @@ level: the energy-norm error at T, the mean DoFs and the time loop's wall
 time (summary.txt) without the sampled error norms, also with the serial
 triangulation. --only LABELS runs the criteria of the comma-separated
 labels only (e.g. 'recovery mf,recovery mf serial').
+--scale F multiplies the cells along the bar by F and divides the
+initial gap and the end time by F (tau falls with h_min): the same
+number of steps and adaptations, and the front crosses as many cells, on
+a mesh of about F^dim times the DoFs (F = 3 and 10 in 2D, 2 and 4 in 3D
+for 1e5 and 1e6); it leaves out the Kelly runs and the bar below.
+--dim D runs the cases of dimension D only.
 One rank, Release build.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/adaptation_cost.py [build/dyncontact]
-                                  [--tau-ratio R] [--only LABELS]"""
+                                  [--tau-ratio R] [--only LABELS]
+                                  [--scale F] [--dim D]"""
 import csv
 import os
 import re
@@ -49,6 +56,10 @@ from options import take_option
 arguments = sys.argv[1:]
 tau_ratio = take_option(arguments, "--tau-ratio", float)
 only = take_option(arguments, "--only")
+scale = take_option(arguments, "--scale", float)
+only_dim = take_option(arguments, "--dim", int)
+if scale is not None and not scale > 0:
+    sys.exit("--scale must be > 0; got %g" % scale)
 executable = arguments[0] if arguments else "build/dyncontact"
 folder = "results-adaptation-cost"
 os.makedirs(folder, exist_ok=True)
@@ -73,6 +84,12 @@ if tau_ratio:
     cases = [case for case in cases if case[:2] != (3, 1)]
     criteria = criteria[1:3] + [("recovery mg", "recovery velocity",
                                  "matrix-free", "multigrid", "distributed")]
+if scale:
+    cases = [(dim, degree, int(round(cells * scale)), end / scale)
+             for dim, degree, cells, end in cases]
+    criteria = [c for c in criteria if c[0] != "kelly"]
+if only_dim:
+    cases = [case for case in cases if case[0] == only_dim]
 if only:
     labels = only.split(",")
     unknown = [l for l in labels if l not in [c[0] for c in criteria]]
@@ -107,7 +124,7 @@ subsection Scene
     set Length = 1
     set Height = 0.25
     set Impact velocity = 1
-    set Initial gap = 0.1
+    set Initial gap = %g
     set Cells along length = %d
   end
 end
@@ -132,7 +149,8 @@ subsection Output
   set Output interval = 0.5
   set Write vtu = false
 end
-""" % (dim, degree, os.path.join(folder, name), cells, tau, end,
+""" % (dim, degree, os.path.join(folder, name), 0.1 / (scale or 1),
+       cells, tau, end,
        step_matrix,
        "\n  set Preconditioner = " + preconditioner
        if preconditioner != "automatic" else "", triangulation))
@@ -171,8 +189,9 @@ for dim, degree, cells, end in cases:
             continue
         if tau_ratio and dim == 3 and step_matrix == "assembled":
             continue  # Q2 with AMG: about 30 s per step at 3e5 DoFs
-        name = "%dd_q%d_%s%s" % (dim, degree, label.replace(" ", "_"),
-                                 "_tau%g" % tau_ratio if tau_ratio else "")
+        name = "%dd_q%d_%s%s%s" % (dim, degree, label.replace(" ", "_"),
+                                   "_tau%g" % tau_ratio if tau_ratio else "",
+                                   "_scale%g" % scale if scale else "")
         sections, dofs, _ = run(name, dim, degree, cells, end, criterion,
                                 step_matrix=step_matrix,
                                 preconditioner=preconditioner,
@@ -193,7 +212,7 @@ for dim, degree, cells, end in cases:
                  total / step))
         sys.stdout.flush()
 
-if tau_ratio or only:
+if tau_ratio or only or scale:
     sys.exit(0)
 print()
 print("| bar to T = 2.5 s | error at T | mean DoFs | time loop without "

@@ -4,9 +4,12 @@ N-CS++, lumped mass, tau = h/(2c) of 128 cells along, exact solution):
 the uniform mesh of 128 cells along against adaptive meshes of 32 coarse
 cells along and 2 levels, by Kelly's indicator of the velocity every 2 and
 8 steps and by the velocity jump with the contact zone every 8 and 16 steps
-with Front widening = 1. Prints mean DoFs, the time loop without the
-sampled norms, the energy-norm error at T over sqrt(E(0)) and the position
-error at T, one core.
+with Front widening = 1; then with Numerical dissipation = 0.05 the
+uniform mesh and the velocity jump every 16 and 8 steps (on deal.II's
+serial triangulation, as the last run without dissipation too), beside
+the uniform mesh of 64 cells along with it. Prints mean DoFs, the time
+loop without the sampled norms, the energy-norm error at T over sqrt(E(0))
+and the position error at T, one core.
 
 Usage: benchmarks/front_widening.py build/dyncontact
 """
@@ -81,3 +84,19 @@ run("jump-every-8-widened", 32,
     adaptive(8, 1, "velocity jump, contact zone"))
 run("jump-every-16-widened", 32,
     adaptive(16, 1, "velocity jump, contact zone"))
+theta = """subsection Time integration
+  set Numerical dissipation = 0.05
+end
+"""
+serial = """subsection Mesh
+  set Triangulation = serial
+end
+"""
+run("jump-every-16-widened-serial", 32,
+    adaptive(16, 1, "velocity jump, contact zone") + serial)
+run("uniform-128-theta", 128, theta)
+run("uniform-64-theta", 64, theta)
+run("jump-every-16-widened-serial-theta", 32,
+    adaptive(16, 1, "velocity jump, contact zone") + serial + theta)
+run("jump-every-8-widened-serial-theta", 32,
+    adaptive(8, 1, "velocity jump, contact zone") + serial + theta)
