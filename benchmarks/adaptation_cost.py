@@ -58,6 +58,8 @@ tau_ratio = take_option(arguments, "--tau-ratio", float)
 only = take_option(arguments, "--only")
 scale = take_option(arguments, "--scale", float)
 only_dim = take_option(arguments, "--dim", int)
+if only_dim is not None and only_dim not in (2, 3):
+    sys.exit("--dim must be 2 or 3; got %d" % only_dim)
 if scale is not None and not scale > 0:
     sys.exit("--scale must be > 0; got %g" % scale)
 executable = arguments[0] if arguments else "build/dyncontact"
