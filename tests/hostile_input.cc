@@ -20,6 +20,8 @@
 
 #include <boost/crc.hpp>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -365,6 +367,11 @@ main(int argc, char **argv)
          "The newest checkpoint there that passes the checks is 'step_",
          "delete last"},
     {"checkpoint",
+         "'last' is a FIFO (opening it would block)",
+         resume,
+         "is not a regular file",
+         "fifo last"},
+    {"checkpoint",
          "no checkpoint at all",
          resume,
          "no checkpoint",
@@ -594,6 +601,11 @@ main(int argc, char **argv)
      }},
     {"bad last", [&] { std::ofstream("ck/checkpoints/last") << "step_9\n"; }},
     {"delete last", [&] { fs::remove("ck/checkpoints/last"); }},
+    {"fifo last",
+     [&] {
+       fs::remove("ck/checkpoints/last");
+       mkfifo("ck/checkpoints/last", 0600);
+     }},
     {"delete all", [&] { fs::remove_all("ck/checkpoints"); }},
     {"edit gmsh mesh", [&] {
        std::string mesh = read("edited.msh");

@@ -26,9 +26,20 @@ namespace dyncontact
     /// The folder name in the file 'last' of the checkpoints in @p root,
     /// without leading and trailing blanks and carriage returns (a file
     /// written by hand may carry them); nullopt if there is no such file.
+    /// Throws if 'last' is there but no regular file (a folder, or a FIFO,
+    /// whose opening would block).
     std::optional<std::string>
     last_name(const std::string &root)
     {
+      std::error_code error;
+      const auto      status = std::filesystem::status(root + "/last", error);
+      if (error || !std::filesystem::exists(status))
+        return std::nullopt;
+      AssertThrow(std::filesystem::is_regular_file(status),
+                  ExcMessage("'" + root +
+                             "/last' is not a regular file: it must be a "
+                             "text file that names the last good "
+                             "checkpoint's folder. Remove it."));
       std::ifstream last(root + "/last");
       if (!last.good())
         return std::nullopt;
@@ -210,32 +221,42 @@ namespace dyncontact
   {
     // rank 0 reads 'last' and, without it, looks for what to advise: every
     // rank takes the same branch
-    std::string name_or_advice;
+    // ('+' and the name, or '-' and the message)
+    std::string name_or_message;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        const std::optional<std::string> name = last_name(root);
-        if (name.has_value())
-          name_or_advice = "+" + *name;
-        else
-          // (a 'last' lost while checkpoints that pass the checks are
-          // there: the newest of them is named, not taken without being
-          // asked)
-          try
+      try
+        {
+          const std::optional<std::string> name = last_name(root);
+          if (name.has_value() && !name->empty())
+            name_or_message = "+" + *name;
+          else
             {
-              name_or_advice = "-" + advice_beside("");
+              // (a 'last' lost while checkpoints that pass the checks are
+              // there: the newest of them is named, not taken without
+              // being asked)
+              std::string advice = ".";
+              try
+                {
+                  advice = advice_beside("");
+                }
+              catch (const std::exception &)
+                {}
+              name_or_message = "-the file '" + root +
+                                "/last', which names the checkpoint to "
+                                "resume from, is " +
+                                (name.has_value() ? "empty" : "missing") +
+                                advice;
             }
-          catch (const std::exception &)
-            {
-              name_or_advice = "-.";
-            }
-      }
-    name_or_advice = Utilities::MPI::broadcast(comm, name_or_advice, 0);
-    AssertThrow(name_or_advice[0] == '+',
-                ExcMessage("Checkpointing/Resume: the file 'last', which "
-                           "names the checkpoint to resume from, is missing "
-                           "in '" +
-                           root + "'" + name_or_advice.substr(1)));
-    return root + "/" + name_or_advice.substr(1);
+        }
+      catch (const std::exception &e)
+        {
+          name_or_message = "-" + message_of(e);
+        }
+    name_or_message = Utilities::MPI::broadcast(comm, name_or_message, 0);
+    AssertThrow(name_or_message[0] == '+',
+                ExcMessage("Checkpointing/Resume: " +
+                           name_or_message.substr(1)));
+    return root + "/" + name_or_message.substr(1);
   }
 
 
@@ -364,8 +385,8 @@ namespace dyncontact
                   " (echo " + other->second + " > '" + root + "/last')" :
                   std::string()) +
                "; or start afresh (Checkpointing/Resume = false), whose "
-               "first checkpoint replaces the checkpoints there: give it "
-               "another Output directory to keep them.";
+               "checkpoints replace those there: give it another Output "
+               "directory to keep them.";
     if (!dir.empty())
       return ". There is no other checkpoint beside it that passes the "
              "checks: start afresh (Checkpointing/Resume = false).";
