@@ -113,7 +113,7 @@ namespace dyncontact
     // the inhomogeneities, where the owned lines are the same (close()
     // resolves chains with the same coefficients whatever the
     // inhomogeneities; checked entry by entry, else deal.II distributes)
-    inhomogeneous = nullptr;
+    inhomogeneities_local = false;
     inhomogeneities.clear();
     // (local and the argument are the same on every rank)
     if (!local || inhomogeneous_constraints == nullptr)
@@ -135,7 +135,7 @@ namespace dyncontact
         }
     // (on every rank alike: the other path's distribute() is collective)
     if (Utilities::MPI::min((same && l == rows.size()) ? 1 : 0, comm) == 1)
-      inhomogeneous = inhomogeneous_constraints;
+      inhomogeneities_local = true;
     else
       inhomogeneities.clear();
   }
@@ -166,7 +166,7 @@ namespace dyncontact
         // where the local form does all (on every rank), the
         // AffineConstraints are not read again: their memory (lines and an
         // index cache over the relevant DoFs, per solver) is released
-        if (c->homogeneous.inhomogeneous != nullptr)
+        if (c->homogeneous.inhomogeneities_local)
           {
             c->constraints.clear();
             c->homogeneous_constraints.clear();
@@ -184,7 +184,7 @@ namespace dyncontact
     VectorType                 &v) const
   {
     const Condensation &homogeneous = constraints.homogeneous;
-    if (homogeneous.inhomogeneous == nullptr)
+    if (!homogeneous.inhomogeneities_local)
       {
         constraints.constraints.distribute(v);
         return;

@@ -219,16 +219,15 @@ namespace dyncontact
   std::string
   Checkpoints::last_directory() const
   {
-    // rank 0 reads 'last' and, without it, looks for what to advise: every
-    // rank takes the same branch
-    // ('+' and the name, or '-' and the message)
-    std::string name_or_message;
+    // rank 0 reads 'last' and, without it, looks for what to advise; every
+    // rank stops with its message
+    std::string name, failure;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       try
         {
-          const std::optional<std::string> name = last_name(root);
-          if (name.has_value() && !name->empty())
-            name_or_message = "+" + *name;
+          const std::optional<std::string> last = last_name(root);
+          if (last.has_value() && !last->empty())
+            name = *last;
           else
             {
               // (a 'last' lost while checkpoints that pass the checks are
@@ -241,22 +240,18 @@ namespace dyncontact
                 }
               catch (const std::exception &)
                 {}
-              name_or_message = "-the file '" + root +
-                                "/last', which names the checkpoint to "
-                                "resume from, is " +
-                                (name.has_value() ? "empty" : "missing") +
-                                advice;
+              failure = "Checkpointing/Resume: the file '" + root +
+                        "/last', which names the checkpoint to resume from, "
+                        "is " +
+                        (last.has_value() ? "empty" : "missing") + advice;
             }
         }
       catch (const std::exception &e)
         {
-          name_or_message = "-" + message_of(e);
+          failure = "Checkpointing/Resume: " + message_of(e);
         }
-    name_or_message = Utilities::MPI::broadcast(comm, name_or_message, 0);
-    AssertThrow(name_or_message[0] == '+',
-                ExcMessage("Checkpointing/Resume: " +
-                           name_or_message.substr(1)));
-    return root + "/" + name_or_message.substr(1);
+    stop_with_message_of_rank_0(failure, comm);
+    return root + "/" + Utilities::MPI::broadcast(comm, name, 0);
   }
 
 
@@ -277,12 +272,13 @@ namespace dyncontact
         }
       catch (const std::exception &e)
         {
-          problem = e.what();
+          problem = message_of(e);
         }
-    problem = Utilities::MPI::broadcast(comm, problem, 0);
-    AssertThrow(problem.empty(),
-                ExcMessage("Checkpointing/Resume: the checkpoint '" + dir +
-                           "' cannot be used: " + problem));
+    stop_with_message_of_rank_0(problem.empty() ?
+                                  problem :
+                                  "Checkpointing/Resume: the checkpoint '" +
+                                    dir + "' cannot be used: " + problem,
+                                comm);
 
     std::ifstream in(dir + "/state.txt");
     const auto  damaged = ExcMessage("Checkpointing/Resume: the checkpoint '" +
@@ -342,10 +338,9 @@ namespace dyncontact
     // it. The refused one is not removed behind the user's back, nor
     // silently replaced by an older state.
     std::map<unsigned long, std::string> others; // by step, newest last
-    const std::string                    refused =
-      dir.empty() ? std::string() :
-                                       std::string(std::filesystem::path(dir).filename());
-    std::error_code error; // an unreadable folder: no advice
+    // (an empty dir has an empty name: no folder is left out)
+    const std::string refused = std::filesystem::path(dir).filename();
+    std::error_code   error; // an unreadable folder: no advice
     for (auto entry = std::filesystem::directory_iterator(root, error);
          !error && entry != std::filesystem::directory_iterator();
          entry.increment(error))

@@ -286,11 +286,12 @@ namespace dyncontact
       std::vector<unsigned int>   slots;
       std::vector<int>            slot_columns;
       mutable std::vector<double> slot_sums;
-      /// the inhomogeneous constraints and each owned line's inhomogeneity
-      /// (empty unless local and reinit() was given them; then neither
-      /// AffineConstraints is read again, and constraints_of() clears both)
-      const AffineConstraints<double> *inhomogeneous = nullptr;
-      std::vector<double>              inhomogeneities;
+      /// each owned line's inhomogeneity, where local and reinit() was
+      /// given the inhomogeneous constraints (on every rank alike); then
+      /// neither AffineConstraints is read again, and constraints_of()
+      /// clears both
+      bool                inhomogeneities_local = false;
+      std::vector<double> inhomogeneities;
     };
 
     /**
