@@ -81,7 +81,10 @@ namespace dyncontact
         , scalar_mass(n_nodes * n_nodes)
         , scalar_load(n_nodes)
       {
-        mass.reinit(dofs_per_cell, dofs_per_cell);
+        if (lumped_mass)
+          mass_diagonal.reinit(dofs_per_cell);
+        else
+          mass.reinit(dofs_per_cell, dofs_per_cell);
         load.reinit(dofs_per_cell);
         boundary_weights.reinit(dofs_per_cell);
         std::tie(component, node) = components_and_nodes(fe);
@@ -100,7 +103,10 @@ namespace dyncontact
                                                     &tractions,
               const std::vector<types::boundary_id> &contact_ids)
       {
-        mass             = 0.;
+        if (lumped_mass)
+          mass_diagonal = 0.;
+        else
+          mass = 0.;
         load             = 0.;
         boundary_weights = 0.;
         fe_values.reinit(cell);
@@ -116,7 +122,9 @@ namespace dyncontact
         return positive;
       }
 
+      /// the element mass matrix, or (lumped) its diagonal
       FullMatrix<double> mass;
+      Vector<double>     mass_diagonal;
       Vector<double>     load;
       Vector<double>     boundary_weights;
 
@@ -142,12 +150,14 @@ namespace dyncontact
               scalar_mass[k * n_nodes + l] +=
                 rho * mass_values.shape_value(k, q) *
                 mass_values.shape_value(l, q) * mass_values.JxW(q);
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = (lumped_mass ? i : 0);
-               j < (lumped_mass ? i + 1 : dofs_per_cell);
-               ++j)
-            if (component[i] == component[j])
-              mass(i, j) = scalar_mass[node[i] * n_nodes + node[j]];
+        if (lumped_mass)
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            mass_diagonal(i) = scalar_mass[node[i] * n_nodes + node[i]];
+        else
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              if (component[i] == component[j])
+                mass(i, j) = scalar_mass[node[i] * n_nodes + node[j]];
       }
 
       void
@@ -197,6 +207,52 @@ namespace dyncontact
       /// the scalar mass int phi_k phi_l and load int phi_k
       std::vector<double> scalar_mass;
       std::vector<double> scalar_load;
+    };
+
+
+
+    /**
+     * Adds the values of a cell into an owned Trilinos vector: a locally
+     * owned entry directly in the vector's local array (deal.II's add()
+     * looks every index up in the vector's map), any other one through
+     * add(), which keeps it for compress(). Each entry receives the same
+     * additions in the same order as through add() alone.
+     */
+    class OwnedAdder
+    {
+    public:
+      OwnedAdder(VectorType &vector, const IndexSet &owned)
+        : vector(vector)
+        , owned(owned)
+        , data(vector.begin())
+        , contiguous(owned.is_contiguous())
+        , first(owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0)
+        , n_owned(owned.n_elements())
+      {}
+
+      void
+      add(const std::vector<types::global_dof_index> &indices,
+          const Vector<double>                       &values)
+      {
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          {
+            const types::global_dof_index index = indices[i];
+            if (contiguous ? (index >= first && index - first < n_owned) :
+                             owned.is_element(index))
+              data[contiguous ? index - first :
+                                owned.index_within_set(index)] += values[i];
+            else
+              vector.add(1, &index, values.begin() + i);
+          }
+      }
+
+    private:
+      VectorType                   &vector;
+      const IndexSet               &owned;
+      double                       *data;
+      const bool                    contiguous;
+      const types::global_dof_index first;
+      const types::global_dof_index n_owned;
     };
 
 
@@ -386,8 +442,17 @@ namespace dyncontact
                                         scene.all_contact_boundary_ids();
     CellTerms<dim>      terms(mapping, fe, scalar_fe, parameters.lumped_mass);
     std::vector<double> bad_cell; // centre and body of an inverted cell
-    Vector<double>      cell_lumped_mass(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    std::unique_ptr<OwnedAdder> lumped_mass_adder, load_adder, weight_adder;
+    if (parameters.lumped_mass)
+      lumped_mass_adder =
+        std::make_unique<OwnedAdder>(lumped_mass_diagonal, locally_owned);
+    if (!parameters.multigrid_level)
+      {
+        load_adder = std::make_unique<OwnedAdder>(load, locally_owned);
+        weight_adder =
+          std::make_unique<OwnedAdder>(boundary_weights, locally_owned);
+      }
 
     materials.clear();
     std::unique_ptr<ElementMatrixAdder> mass_adder;
@@ -414,17 +479,13 @@ namespace dyncontact
             }
           cell->get_dof_indices(dof_indices);
           if (parameters.lumped_mass)
-            {
-              for (unsigned int i = 0; i < dof_indices.size(); ++i)
-                cell_lumped_mass(i) = terms.mass(i, i);
-              lumped_mass_diagonal.add(dof_indices, cell_lumped_mass);
-            }
+            lumped_mass_adder->add(dof_indices, terms.mass_diagonal);
           else
             mass_adder->add(dof_indices, terms.mass);
           if (!parameters.multigrid_level)
             {
-              load.add(dof_indices, terms.load);
-              boundary_weights.add(dof_indices, terms.boundary_weights);
+              load_adder->add(dof_indices, terms.load);
+              weight_adder->add(dof_indices, terms.boundary_weights);
             }
         }
 
@@ -454,6 +515,7 @@ namespace dyncontact
     // function phi_k e_c, mu (sum_a H^aa_kk + H^cc_kk) + lambda H^cc_kk,
     // summed over the cells as the assembled matrix's entries are
     diagonal.reinit(locally_owned, comm);
+    OwnedAdder         adder(diagonal, locally_owned);
     const QGauss<dim>  quadrature(fe.degree + 1);
     FEValues<dim>      fe_values(mapping,
                             scalar_fe,
@@ -494,7 +556,7 @@ namespace dyncontact
             }
           cell->get_dof_indices(dof_indices);
           // (a locally owned cell's DoFs may be owned elsewhere)
-          diagonal.add(dof_indices, cell_diagonal);
+          adder.add(dof_indices, cell_diagonal);
         }
     diagonal.compress(VectorOperation::add);
   }

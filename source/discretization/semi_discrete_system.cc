@@ -432,21 +432,34 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::start_transfer(
     const std::vector<const VectorType *> &vectors)
   {
+    std::vector<const VectorType *> ghosted;
+    if (is_serial())
+      {
+        // one rank holds every DoF: local index = global index
+        serial_transferred.assign(vectors.size(),
+                                  Vector<double>(dof_handler.n_dofs()));
+        for (unsigned int i = 0; i < vectors.size(); ++i)
+          {
+            AssertDimension(vectors[i]->locally_owned_size(),
+                            dof_handler.n_dofs());
+            std::copy(vectors[i]->begin(),
+                      vectors[i]->end(),
+                      serial_transferred[i].begin());
+          }
+        serial_transfer =
+          std::make_unique<dealii::SolutionTransfer<dim, Vector<double>>>(
+            dof_handler);
+        return ghosted;
+      }
     transferred.assign(vectors.size(),
                        VectorType(locally_owned, locally_relevant, comm));
-    std::vector<const VectorType *> ghosted;
     for (unsigned int i = 0; i < vectors.size(); ++i)
       {
         transferred[i] = *vectors[i];
         ghosted.push_back(&transferred[i]);
       }
-    if (is_serial())
-      serial_transfer =
-        std::make_unique<dealii::SolutionTransfer<dim, VectorType>>(
-          dof_handler);
-    else
-      transfer = std::make_unique<
-        parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
+    transfer = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
     return ghosted;
   }
 
@@ -468,7 +481,8 @@ namespace dyncontact
   {
     const auto vectors = start_transfer({&u, &udot});
     if (serial_transfer)
-      serial_transfer->prepare_for_coarsening_and_refinement(transferred);
+      serial_transfer->prepare_for_coarsening_and_refinement(
+        serial_transferred);
     else
       transfer->prepare_for_coarsening_and_refinement(vectors);
   }
@@ -484,13 +498,14 @@ namespace dyncontact
     reinit_vector(udot);
     if (serial_transfer)
       {
-        std::vector<VectorType> out(2, u);
-        serial_transfer->interpolate(transferred, out);
+        std::vector<Vector<double>> out(2,
+                                        Vector<double>(dof_handler.n_dofs()));
+        serial_transfer->interpolate(serial_transferred, out);
         serial_transfer.reset();
-        for (VectorType &v : out)
-          v.compress(VectorOperation::insert);
-        u    = out[0];
-        udot = out[1];
+        serial_transferred.clear();
+        AssertDimension(u.locally_owned_size(), dof_handler.n_dofs());
+        std::copy(out[0].begin(), out[0].end(), u.begin());
+        std::copy(out[1].begin(), out[1].end(), udot.begin());
       }
     else
       {
