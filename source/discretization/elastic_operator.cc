@@ -30,6 +30,10 @@ namespace dyncontact
     std::vector<std::array<Vectorized, 2>> viscous_moduli;
     mutable LAVector                       src;
     mutable LAVector                       dst;
+    /// int psi_i of each DoF (the recovery's weights), computed at the
+    /// first recovery on the mesh
+    mutable LAVector recovery_weight;
+    mutable bool     have_recovery_weight = false;
 
     /// The stress of the form a A + b B at the quadrature points of
     /// @p phi (its gradients evaluated), submitted for integration:
@@ -112,6 +116,8 @@ namespace dyncontact
                              additional_data);
     data->matrix_free.initialize_dof_vector(data->src);
     data->matrix_free.initialize_dof_vector(data->dst);
+    data->recovery_weight.reinit(0);
+    data->have_recovery_weight = false;
 
     const unsigned int n_batches = data->matrix_free.n_cell_batches();
     data->elastic_moduli.assign(n_batches, {});
@@ -185,25 +191,37 @@ namespace dyncontact
     copy_owned(x, field);
     x.update_ghost_values();
 
-    // int psi_i and int psi_i d_k x (k < dim), each DoF of the layout
-    LAVector              weight;
-    std::vector<LAVector> recovered(dim);
-    matrix_free.initialize_dof_vector(weight);
-    for (auto &g : recovered)
-      matrix_free.initialize_dof_vector(g);
+    // int psi_i (once per mesh) and int psi_i d_k x (k < dim), each DoF
+    // of the layout
     FEEvaluation<dim, -1, 0, dim, double> phi(matrix_free);
     FEEvaluation<dim, -1, 0, dim, double> psi(matrix_free);
-    Tensor<1, dim, Vectorized>            ones;
-    for (unsigned int c = 0; c < dim; ++c)
-      ones[c] = 1.;
+    if (!data->have_recovery_weight)
+      {
+        matrix_free.initialize_dof_vector(data->recovery_weight);
+        Tensor<1, dim, Vectorized> ones;
+        for (unsigned int c = 0; c < dim; ++c)
+          ones[c] = 1.;
+        for (unsigned int batch = 0; batch < matrix_free.n_cell_batches();
+             ++batch)
+          {
+            psi.reinit(batch);
+            for (const unsigned int q : psi.quadrature_point_indices())
+              psi.submit_value(ones, q);
+            psi.integrate_scatter(EvaluationFlags::values,
+                                  data->recovery_weight);
+          }
+        data->recovery_weight.compress(VectorOperation::add);
+        data->have_recovery_weight = true;
+      }
+    const LAVector       &weight = data->recovery_weight;
+    std::vector<LAVector> recovered(dim);
+    for (auto &g : recovered)
+      matrix_free.initialize_dof_vector(g);
     for (unsigned int batch = 0; batch < matrix_free.n_cell_batches(); ++batch)
       {
         phi.reinit(batch);
         phi.gather_evaluate(x, EvaluationFlags::gradients);
         psi.reinit(batch);
-        for (const unsigned int q : psi.quadrature_point_indices())
-          psi.submit_value(ones, q);
-        psi.integrate_scatter(EvaluationFlags::values, weight);
         for (unsigned int k = 0; k < dim; ++k)
           {
             for (const unsigned int q : psi.quadrature_point_indices())
@@ -217,7 +235,6 @@ namespace dyncontact
             psi.integrate_scatter(EvaluationFlags::values, recovered[k]);
           }
       }
-    weight.compress(VectorOperation::add);
     for (auto &g : recovered)
       {
         g.compress(VectorOperation::add);
