@@ -264,6 +264,9 @@ namespace dyncontact
     check_for_inverted_cells(const std::vector<double> &bad_cell,
                              const MPI_Comm             comm)
     {
+      // (the gather, which serialises, only where some rank found one)
+      if (Utilities::MPI::logical_or(!bad_cell.empty(), comm) == false)
+        return;
       for (const auto &rank_bad : Utilities::MPI::all_gather(comm, bad_cell))
         if (!rank_bad.empty())
           {
@@ -613,7 +616,11 @@ namespace dyncontact
               element_lambda = lambda;
             }
           have_products = true;
-          cell_matrix   = element_matrix;
+          // (an entry-wise copy: FullMatrix's assignment frees and
+          // allocates its storage anew, once per cell)
+          std::copy(&element_matrix(0, 0),
+                    &element_matrix(0, 0) + dofs_per_cell * dofs_per_cell,
+                    &cell_matrix(0, 0));
           cell->get_dof_indices(dof_indices);
           if (lumped_mass_in_cells)
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
