@@ -299,9 +299,12 @@ namespace dyncontact
     for (const auto row : rows)
       {
         indices.clear();
-        for (auto entry = dsp.begin(row); entry != dsp.end(row); ++entry)
+        // (by position: deal.II 9.4's row iterators look for the next
+        // non-empty row at every begin() and end())
+        const unsigned int n_entries = dsp.row_length(row);
+        for (unsigned int k = 0; k < n_entries; ++k)
           {
-            const int column = local_column(entry->column());
+            const int column = local_column(dsp.column_number(row, k));
             for (unsigned int c = 0; c < block; ++c)
               indices.push_back(block * column + c);
           }
