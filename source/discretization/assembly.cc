@@ -216,7 +216,8 @@ namespace dyncontact
      * owned entry directly in the vector's local array (deal.II's add()
      * looks every index up in the vector's map), any other one through
      * add(), which keeps it for compress(). Each entry receives the same
-     * additions in the same order as through add() alone.
+     * additions in the same order as through add() alone. The vector must
+     * be freshly reinit()ed (or compressed) on @p owned, without ghosts.
      */
     class OwnedAdder
     {
@@ -228,7 +229,10 @@ namespace dyncontact
         , contiguous(owned.is_contiguous())
         , first(owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0)
         , n_owned(owned.n_elements())
-      {}
+      {
+        Assert(!vector.has_ghost_elements(), ExcGhostsPresent());
+        Assert(vector.locally_owned_elements() == owned, ExcInternalError());
+      }
 
       void
       add(const std::vector<types::global_dof_index> &indices,

@@ -438,7 +438,10 @@ namespace dyncontact
     std::vector<const VectorType *> ghosted;
     if (is_serial())
       {
-        // one rank holds every DoF: local index = global index
+        // one rank holds every DoF: local index = global index (a serial
+        // triangulation on several ranks is refused when the run starts)
+        AssertThrow(Utilities::MPI::n_mpi_processes(comm) == 1,
+                    ExcInternalError());
         serial_transferred.assign(vectors.size(),
                                   Vector<double>(dof_handler.n_dofs()));
         for (unsigned int i = 0; i < vectors.size(); ++i)

@@ -430,7 +430,9 @@ namespace dyncontact
     bool
     is_serial() const;
     /// Copies @p vectors into ghosted vectors and starts a new transfer
-    /// object on the current DoFs; returns the vectors to hand to it.
+    /// object on the current DoFs; returns the vectors to hand to it. On a
+    /// serial triangulation: copies them into serial_transferred instead
+    /// and returns nothing.
     std::vector<const VectorType *>
     start_transfer(const std::vector<const VectorType *> &vectors);
   };
