@@ -338,7 +338,8 @@ namespace dyncontact
         else
           active[p] = 0;
       }
-    v.compress(VectorOperation::insert);
+    // (the corrections were added: a Debug build checks the operation)
+    v.compress(VectorOperation::add);
     Result result;
     result.iterations = 1;
     return result;

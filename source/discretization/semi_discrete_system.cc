@@ -435,37 +435,21 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::start_transfer(
     const std::vector<const VectorType *> &vectors)
   {
-    std::vector<const VectorType *> ghosted;
-    if (is_serial())
-      {
-        // one rank holds every DoF: local index = global index (a serial
-        // triangulation on several ranks is refused when the run starts)
-        AssertThrow(Utilities::MPI::n_mpi_processes(comm) == 1,
-                    ExcInternalError());
-        serial_transferred.assign(vectors.size(),
-                                  Vector<double>(dof_handler.n_dofs()));
-        for (unsigned int i = 0; i < vectors.size(); ++i)
-          {
-            AssertDimension(vectors[i]->locally_owned_size(),
-                            dof_handler.n_dofs());
-            std::copy(vectors[i]->begin(),
-                      vectors[i]->end(),
-                      serial_transferred[i].begin());
-          }
-        serial_transfer =
-          std::make_unique<dealii::SolutionTransfer<dim, Vector<double>>>(
-            dof_handler);
-        return ghosted;
-      }
     transferred.assign(vectors.size(),
                        VectorType(locally_owned, locally_relevant, comm));
+    std::vector<const VectorType *> ghosted;
     for (unsigned int i = 0; i < vectors.size(); ++i)
       {
         transferred[i] = *vectors[i];
         ghosted.push_back(&transferred[i]);
       }
-    transfer = std::make_unique<
-      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
+    if (is_serial())
+      serial_transfer =
+        std::make_unique<dealii::SolutionTransfer<dim, VectorType>>(
+          dof_handler);
+    else
+      transfer = std::make_unique<
+        parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
     return ghosted;
   }
 
@@ -487,8 +471,7 @@ namespace dyncontact
   {
     const auto vectors = start_transfer({&u, &udot});
     if (serial_transfer)
-      serial_transfer->prepare_for_coarsening_and_refinement(
-        serial_transferred);
+      serial_transfer->prepare_for_coarsening_and_refinement(transferred);
     else
       transfer->prepare_for_coarsening_and_refinement(vectors);
   }
@@ -504,14 +487,13 @@ namespace dyncontact
     reinit_vector(udot);
     if (serial_transfer)
       {
-        std::vector<Vector<double>> out(2,
-                                        Vector<double>(dof_handler.n_dofs()));
-        serial_transfer->interpolate(serial_transferred, out);
+        std::vector<VectorType> out(2, u);
+        serial_transfer->interpolate(transferred, out);
         serial_transfer.reset();
-        serial_transferred.clear();
-        AssertDimension(u.locally_owned_size(), dof_handler.n_dofs());
-        std::copy(out[0].begin(), out[0].end(), u.begin());
-        std::copy(out[1].begin(), out[1].end(), udot.begin());
+        for (VectorType &v : out)
+          v.compress(VectorOperation::insert);
+        u    = out[0];
+        udot = out[1];
       }
     else
       {

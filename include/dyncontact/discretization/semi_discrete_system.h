@@ -11,7 +11,6 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-#include <deal.II/lac/vector.h>
 #include <deal.II/numerics/solution_transfer.h>
 
 #include <dyncontact/discretization/elastic_operator.h>
@@ -417,22 +416,16 @@ namespace dyncontact
     VectorType           boundary_weights;
 
     /// A state in transfer (refinement or checkpoint) and its ghosted copy:
-    /// p4est's transfer, or deal.II's on a serial triangulation, which
-    /// transfers plain copies (deal.II's Vector: its element access is
-    /// direct, a Trilinos vector's goes through a map per entry).
+    /// p4est's transfer, or deal.II's on a serial triangulation.
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
-                            transfer;
-    std::vector<VectorType> transferred;
-    std::unique_ptr<dealii::SolutionTransfer<dim, Vector<double>>>
-                                serial_transfer;
-    std::vector<Vector<double>> serial_transferred;
+                                                               transfer;
+    std::unique_ptr<dealii::SolutionTransfer<dim, VectorType>> serial_transfer;
+    std::vector<VectorType>                                    transferred;
     /// Whether the DoFs are on deal.II's serial triangulation.
     bool
     is_serial() const;
     /// Copies @p vectors into ghosted vectors and starts a new transfer
-    /// object on the current DoFs; returns the vectors to hand to it. On a
-    /// serial triangulation: copies them into serial_transferred instead
-    /// and returns nothing.
+    /// object on the current DoFs; returns the vectors to hand to it.
     std::vector<const VectorType *>
     start_transfer(const std::vector<const VectorType *> &vectors);
   };
