@@ -78,7 +78,7 @@ namespace dyncontact
                              update_values | update_JxW_values)
         , dofs_per_cell(fe.n_dofs_per_cell())
         , n_nodes(scalar_fe.n_dofs_per_cell())
-        , scalar_mass(n_nodes * n_nodes)
+        , scalar_mass(lumped_mass ? n_nodes : n_nodes * n_nodes)
         , scalar_load(n_nodes)
       {
         if (lumped_mass)
@@ -142,22 +142,27 @@ namespace dyncontact
         // (lumped: the element matrix is diagonal, only its diagonal is
         // computed)
         std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
+        if (lumped_mass)
+          {
+            for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
+              for (unsigned int k = 0; k < n_nodes; ++k)
+                scalar_mass[k] += rho * mass_values.shape_value(k, q) *
+                                  mass_values.shape_value(k, q) *
+                                  mass_values.JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              mass_diagonal(i) = scalar_mass[node[i]];
+            return;
+          }
         for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
           for (unsigned int k = 0; k < n_nodes; ++k)
-            for (unsigned int l = (lumped_mass ? k : 0);
-                 l < (lumped_mass ? k + 1 : n_nodes);
-                 ++l)
+            for (unsigned int l = 0; l < n_nodes; ++l)
               scalar_mass[k * n_nodes + l] +=
                 rho * mass_values.shape_value(k, q) *
                 mass_values.shape_value(l, q) * mass_values.JxW(q);
-        if (lumped_mass)
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            mass_diagonal(i) = scalar_mass[node[i] * n_nodes + node[i]];
-        else
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            for (unsigned int j = 0; j < dofs_per_cell; ++j)
-              if (component[i] == component[j])
-                mass(i, j) = scalar_mass[node[i] * n_nodes + node[j]];
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+            if (component[i] == component[j])
+              mass(i, j) = scalar_mass[node[i] * n_nodes + node[j]];
       }
 
       void
@@ -204,7 +209,8 @@ namespace dyncontact
       const unsigned int           n_nodes;
       /// component and scalar shape function of each shape function
       std::vector<unsigned int> component, node;
-      /// the scalar mass int phi_k phi_l and load int phi_k
+      /// the scalar mass int phi_k phi_l (lumped: its diagonal) and load
+      /// int phi_k
       std::vector<double> scalar_mass;
       std::vector<double> scalar_load;
     };
