@@ -347,17 +347,25 @@ namespace dyncontact
     {
       TimerOutput::Scope t(timer, "adaptation: indicators and flags");
       mark_cells();
-      triangulation.prepare_coarsening_and_refinement();
       // a mesh that does not change keeps its DoFs, operators and rows
-      bool changes = false;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned() &&
-            (cell->refine_flag_set() || cell->coarsen_flag_set()))
-          {
-            changes = true;
-            break;
-          }
-      if (Utilities::MPI::logical_or(changes, comm) == false)
+      const auto flagged = [&]() {
+        bool any = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              (cell->refine_flag_set() || cell->coarsen_flag_set()))
+            {
+              any = true;
+              break;
+            }
+        return Utilities::MPI::logical_or(any, comm);
+      };
+      // no flag on any rank: the smoothing of the flags (a pass over all
+      // cells, repeated until nothing changes, and collective for p4est)
+      // has nothing to add to a mesh it made before, and is skipped
+      if (!flagged())
+        return {0., 0.};
+      triangulation.prepare_coarsening_and_refinement();
+      if (!flagged())
         return {0., 0.};
     }
     // (only where the mesh changes: an adaptation that marks no cell
