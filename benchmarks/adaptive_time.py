@@ -30,6 +30,7 @@ e.g. benchmarks/adaptive_time.py build/dyncontact prm/bar_impact.prm \\
      benchmarks/adaptive_time.py build/dyncontact prm/hertz_drop.prm \\
          0.02,0.01,0.005 0.01,0.003,0.001 "Mesh/Initial global refinements=3"
 """
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import math
 import os

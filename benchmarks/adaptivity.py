@@ -7,6 +7,7 @@ uniform reference run, relative to the reference's peak force). Writes
 doc/adaptivity.png and prints the table of doc/results.md.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/adaptivity.py [build/dyncontact]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import os
 import subprocess

@@ -6,6 +6,7 @@ the bars' velocities at the end and the energy-norm error, and plots each
 pair's mean contact pressure and each bar's mean velocity over time against
 the exact solution (doc/bar_chain.png). Usage, from the repository's top
 folder after tools/setup.sh:  benchmarks/bar_chain.py [build/dyncontact]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import math
 import os

@@ -3,6 +3,7 @@
 plots the contact pressure over time against the exact rho c v0
 (doc/bar_impact_pressure.png). Usage, from the repository's top folder after
 tools/setup.sh:  benchmarks/bar_impact_schemes.py [build/dyncontact]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import os
 import subprocess

@@ -7,6 +7,7 @@ the maximum penetration, and the maximum contact pressure (relative to
 rho c v0 for the bar cases).
 Usage (from the top folder, after tools/setup.sh):
     benchmarks/extreme_table.py [build/dyncontact]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import glob
 import os

@@ -13,6 +13,7 @@ and the position error at T, one core.
 
 Usage: benchmarks/front_widening.py build/dyncontact
 """
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import math
 import os

@@ -19,6 +19,7 @@ gGzZ[pP]: G global refinements, Z refinements of the scene's contact zone
 polynomial degree P (1 if not given), e.g. g1z3,g2z2,g1z2p2.
 (prm: another version of prm/ball_drop_adaptive.prm, e.g. a larger block;
 the formulas assume its E, nu and v)."""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import math
 import os

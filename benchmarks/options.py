@@ -1,5 +1,16 @@
-"""Command-line options shared by the benchmark scripts."""
+"""Command-line options shared by the benchmark scripts. Importing it
+makes a script print its docstring (its usage) and exit on --help or -h."""
 import sys
+
+
+def _print_usage_if_asked():
+    if "--help" in sys.argv[1:] or "-h" in sys.argv[1:]:
+        main = sys.modules.get("__main__")
+        print(((main.__doc__ if main else None) or "").strip())
+        sys.exit(0)
+
+
+_print_usage_if_asked()
 
 
 def take_option(arguments, name, convert=str, default=None):

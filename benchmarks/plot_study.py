@@ -6,6 +6,7 @@
   <prefix>_critical.png        sum of meas Gamma* (eq. 40) against tau:
                                Assumption 4.7 holds where it stays bounded
 Usage: benchmarks/plot_study.py study.csv prefix ["title"]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import math
 import sys

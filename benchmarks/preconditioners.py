@@ -8,6 +8,7 @@ condition number it decided by (from summary.txt). One core, one run each:
 the times of the small examples are a few milliseconds and vary by 10-20%.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/preconditioners.py [build/dyncontact] [prm ...]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import glob
 import os
 import re

@@ -7,6 +7,7 @@ Usage: xvfb-run -a pvpython benchmarks/render.py results/solution.pvd TIME
 --below=Y keeps only the cells below the plane y = Y of the reference
 configuration (in 3D: the block without the ball on it); --camera and
 --focus give a 3D view: from the point X,Y,Z at the point X,Y,Z."""
+import options  # noqa: F401 (--help prints the docstring above)
 import sys
 
 from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction,

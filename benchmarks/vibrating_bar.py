@@ -17,6 +17,7 @@ relative L2 error in time, and the largest ripple, the largest deviation
 from the exact value outside 2 h/c of its jumps, relative to rho c v0.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/vibrating_bar.py [build/dyncontact] [eps0]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import os
 import subprocess

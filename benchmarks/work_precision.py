@@ -44,6 +44,7 @@ matrix-free, Jacobi), p = 1 runs assemble it.
 Writes doc/work_precision_<scene>.png and prints the tables of
 doc/results.md. Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/work_precision.py [build/dyncontact] [scene ...]"""
+import options  # noqa: F401 (--help prints the docstring above)
 import csv
 import math
 import os
