@@ -13,17 +13,17 @@ import sys
 from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction,
                              PVDReader, SaveScreenshot, Show, WarpByVector)
 
-options = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--"))
+settings = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--"))
 args = [a for a in sys.argv[1:] if not a.startswith("--")]
 pvd, t, field, png = args[0], float(args[1]), args[2], args[3]
 box = [float(v) for v in args[4:8]] if len(args) >= 8 else None
 
 reader = PVDReader(FileName=pvd)
 source = reader
-if "below" in options:
+if "below" in settings:
     source = Clip(Input=reader)
     source.ClipType = "Plane"
-    source.ClipType.Origin = [0, float(options["below"]), 0]
+    source.ClipType.Origin = [0, float(settings["below"]), 0]
     source.ClipType.Normal = [0, 1, 0]
 warp = WarpByVector(Input=source)
 warp.Vectors = ["POINTS", "displacement"]
@@ -38,9 +38,9 @@ display.RescaleTransferFunctionToDataRange(True, False)
 display.SetScalarBarVisibility(view, True)
 GetColorTransferFunction(field).ApplyPreset("Viridis (matplotlib)", True)
 view.ResetCamera()
-if "camera" in options:
-    view.CameraPosition = [float(v) for v in options["camera"].split(",")]
-    view.CameraFocalPoint = [float(v) for v in options["focus"].split(",")]
+if "camera" in settings:
+    view.CameraPosition = [float(v) for v in settings["camera"].split(",")]
+    view.CameraFocalPoint = [float(v) for v in settings["focus"].split(",")]
     view.CameraViewUp = [0, 1, 0]
 elif box:
     cx, cy = 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3])

@@ -17,7 +17,6 @@ Usage (from the repository's top folder, after tools/setup.sh):
 --joint pairs tau level k with mesh level k (h and tau refined together);
 otherwise every tau level is run on every mesh level. --set overrides
 entries of the base prm (subsection/.../entry=value)."""
-import options  # noqa: F401 (--help prints the docstring above)
 import argparse
 import csv
 import hashlib

@@ -20,6 +20,10 @@ namespace dyncontact
   /// limit_level_difference_at_vertices, p4est's 2:1 balance across faces
   /// and vertices, so that both refine to the same meshes), else p4est's on
   /// @p comm.
+  /// (DiscreteProblem::adapt_mesh() skips the smoothing of the flags when
+  /// no cell is flagged: with these smoothings it has nothing to add to a
+  /// mesh that came out of a refinement. One that adds flags by itself,
+  /// e.g. coarsest_level_1, would need it run.)
   template <int dim>
   std::unique_ptr<Triangulation<dim>>
   make_triangulation(const bool serial, const MPI_Comm comm)
