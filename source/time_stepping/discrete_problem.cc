@@ -361,7 +361,8 @@ namespace dyncontact
       };
       // no flag on any rank: the smoothing of the flags (a pass over all
       // cells, repeated until nothing changes, and collective for p4est)
-      // has nothing to add to a mesh it made before, and is skipped
+      // has nothing to add to a mesh that came out of a refinement (with
+      // the smoothings of make_triangulation()), and is skipped
       if (!flagged())
         return {0., 0.};
       triangulation.prepare_coarsening_and_refinement();
