@@ -187,8 +187,9 @@ namespace dyncontact
         e(index_) -= values[0];
         edot(index_) -= values[1];
       }
-    e.compress(VectorOperation::insert);
-    edot.compress(VectorOperation::insert);
+    // (subtracted: added to locally owned entries)
+    e.compress(VectorOperation::add);
+    edot.compress(VectorOperation::add);
     VectorType tmp(e);
     system.matrices().mass_vmult(tmp, edot);
     double error2 = 0.5 * (tmp * edot);
