@@ -297,6 +297,37 @@ namespace dyncontact
 
 
 
+#ifdef DEBUG
+    /// Whether the Jacobian of MappingQ1's map of @p cell (the one of the
+    /// program) is above 1e-12 (diameter / sqrt(dim))^dim at the points of
+    /// @p quadratures. deal.II's Debug build stops with an assertion in
+    /// FEValues::reinit() where it is not; the Release build computes the
+    /// cell's terms, and the assembly then names the cell. A Debug build
+    /// tests the cells first, so that it names the cell as well.
+    template <int dim>
+    bool
+    jacobians_positive(const typename Triangulation<dim>::cell_iterator &cell,
+                       const std::vector<Quadrature<dim>> &quadratures)
+    {
+      const double bound = 1e-12 * Utilities::fixed_power<dim>(
+                                     cell->diameter() / std::sqrt(double(dim)));
+      for (const auto &quadrature : quadratures)
+        for (const auto &point : quadrature.get_points())
+          {
+            Tensor<2, dim> jacobian;
+            for (const unsigned int v : cell->vertex_indices())
+              jacobian += outer_product(
+                Tensor<1, dim>(cell->vertex(v)),
+                GeometryInfo<dim>::d_linear_shape_function_gradient(point, v));
+            if (!(determinant(jacobian) > bound))
+              return false;
+          }
+      return true;
+    }
+#endif
+
+
+
     /// The moduli (mu, lambda) of the form a A + b B for @p material.
     std::pair<double, double>
     combined_moduli(const Material &material, const double a, const double b)
@@ -467,6 +498,22 @@ namespace dyncontact
           std::make_unique<OwnedAdder>(boundary_weights, locally_owned);
       }
 
+#ifdef DEBUG
+    {
+      // the points of CellTerms' FEValues (see jacobians_positive())
+      const std::vector<Quadrature<dim>> points = {
+        QGauss<dim>(fe.degree + 1), QGaussLobatto<dim>(fe.degree + 1)};
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && bad_cell.empty() &&
+            !jacobians_positive<dim>(cell, points))
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              bad_cell.push_back(cell->center()[d]);
+            bad_cell.push_back(cell->material_id() + 1);
+          }
+      check_for_inverted_cells<dim>(bad_cell, comm);
+    }
+#endif
     materials.clear();
     std::unique_ptr<ElementMatrixAdder> mass_adder;
     if (!parameters.lumped_mass)
