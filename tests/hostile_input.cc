@@ -377,6 +377,11 @@ main(int argc, char **argv)
          "no checkpoint",
          "delete all"},
     {"checkpoint",
+         "Output directory with trailing slashes, nothing there",
+         base + "set Output directory = fresh//\n"
+                    "subsection Checkpointing\n  set Resume = true\nend\n",
+         "'fresh/checkpoints/last'"},
+    {"checkpoint",
          "time edited to nan, checksums recomputed",
          resume,
          "the checkpoint's time t (s) ('time' = 'nan')",

@@ -54,6 +54,10 @@ namespace dyncontact
     degree           = prm.get_integer("Polynomial degree");
     AssertThrow(!output_directory.empty(),
                 ExcMessage("Output directory must not be empty."));
+    // 'results/' is 'results' (the paths in messages and in summary.txt
+    // have no '//'); '/' stays
+    while (output_directory.size() > 1 && output_directory.back() == '/')
+      output_directory.pop_back();
     prm.enter_subsection("Mesh");
     initial_refinements  = prm.get_integer("Initial global refinements");
     serial_triangulation = prm.get("Triangulation") == "serial";
