@@ -377,10 +377,10 @@ main(int argc, char **argv)
          "no checkpoint",
          "delete all"},
     {"checkpoint",
-         "Output directory with trailing slashes, nothing there",
-         base + "set Output directory = fresh//\n"
+         "Output directory with trailing slashes, no checkpoint there",
+         base + "set Output directory = previous//\n"
                     "subsection Checkpointing\n  set Resume = true\nend\n",
-         "'fresh/checkpoints/last'"},
+         "'previous/checkpoints/last'"},
     {"checkpoint",
          "time edited to nan, checksums recomputed",
          resume,
