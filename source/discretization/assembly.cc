@@ -486,6 +486,13 @@ namespace dyncontact
                                         scene.all_contact_boundary_ids();
     CellTerms<dim>      terms(mapping, fe, scalar_fe, parameters.lumped_mass);
     std::vector<double> bad_cell; // centre and body of an inverted cell
+    const auto          note_bad_cell = [&bad_cell](const auto &cell) {
+      if (!bad_cell.empty())
+        return;
+      for (unsigned int d = 0; d < dim; ++d)
+        bad_cell.push_back(cell->center()[d]);
+      bad_cell.push_back(cell->material_id() + 1);
+    };
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     std::unique_ptr<OwnedAdder> lumped_mass_adder, load_adder, weight_adder;
     if (parameters.lumped_mass)
@@ -506,11 +513,7 @@ namespace dyncontact
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() && bad_cell.empty() &&
             !jacobians_positive<dim>(cell, points))
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              bad_cell.push_back(cell->center()[d]);
-            bad_cell.push_back(cell->material_id() + 1);
-          }
+          note_bad_cell(cell);
       check_for_inverted_cells<dim>(bad_cell, comm);
     }
 #endif
@@ -531,12 +534,8 @@ namespace dyncontact
                           scene.body_force(cell->material_id()),
                           tractions,
                           contact_ids);
-          if (!positive && bad_cell.empty())
-            {
-              for (unsigned int d = 0; d < dim; ++d)
-                bad_cell.push_back(cell->center()[d]);
-              bad_cell.push_back(cell->material_id() + 1);
-            }
+          if (!positive)
+            note_bad_cell(cell);
           cell->get_dof_indices(dof_indices);
           if (parameters.lumped_mass)
             lumped_mass_adder->add(dof_indices, terms.mass_diagonal);

@@ -31,9 +31,8 @@ namespace dyncontact
     mutable LAVector                       src;
     mutable LAVector                       dst;
     /// int psi_i of each DoF (the recovery's weights), computed at the
-    /// first recovery on the mesh
+    /// first recovery on the mesh (empty before)
     mutable LAVector recovery_weight;
-    mutable bool     have_recovery_weight = false;
 
     /// The stress of the form a A + b B at the quadrature points of
     /// @p phi (its gradients evaluated), submitted for integration:
@@ -117,7 +116,6 @@ namespace dyncontact
     data->matrix_free.initialize_dof_vector(data->src);
     data->matrix_free.initialize_dof_vector(data->dst);
     data->recovery_weight.reinit(0);
-    data->have_recovery_weight = false;
 
     const unsigned int n_batches = data->matrix_free.n_cell_batches();
     data->elastic_moduli.assign(n_batches, {});
@@ -195,7 +193,7 @@ namespace dyncontact
     // of the layout
     FEEvaluation<dim, -1, 0, dim, double> phi(matrix_free);
     FEEvaluation<dim, -1, 0, dim, double> psi(matrix_free);
-    if (!data->have_recovery_weight)
+    if (data->recovery_weight.size() == 0)
       {
         matrix_free.initialize_dof_vector(data->recovery_weight);
         Tensor<1, dim, Vectorized> ones;
@@ -211,7 +209,6 @@ namespace dyncontact
                                   data->recovery_weight);
           }
         data->recovery_weight.compress(VectorOperation::add);
-        data->have_recovery_weight = true;
       }
     const LAVector       &weight = data->recovery_weight;
     std::vector<LAVector> recovered(dim);
