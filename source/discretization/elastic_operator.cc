@@ -214,16 +214,34 @@ namespace dyncontact
     std::vector<LAVector> recovered(dim);
     for (auto &g : recovered)
       matrix_free.initialize_dof_vector(g);
-    for (unsigned int batch = 0; batch < matrix_free.n_cell_batches(); ++batch)
+    // the gradient of x at the quadrature points, and per cell int x.x
+    // and the volume, kept for the second pass (which then reads and
+    // evaluates the recovered fields only)
+    const unsigned int n_batches = matrix_free.n_cell_batches();
+    const unsigned int n_q       = phi.n_q_points;
+    std::vector<Tensor<2, dim, Vectorized>> gradients(n_batches * n_q);
+    std::vector<Vectorized> values(n_batches), volumes(n_batches);
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
         phi.reinit(batch);
-        phi.gather_evaluate(x, EvaluationFlags::gradients);
+        phi.gather_evaluate(x,
+                            EvaluationFlags::values |
+                              EvaluationFlags::gradients);
+        Vectorized value = 0., volume = 0.;
+        for (const unsigned int q : phi.quadrature_point_indices())
+          {
+            gradients[batch * n_q + q] = phi.get_gradient(q);
+            value += phi.get_value(q) * phi.get_value(q) * phi.JxW(q);
+            volume += phi.JxW(q);
+          }
+        values[batch]  = value;
+        volumes[batch] = volume;
         psi.reinit(batch);
         for (unsigned int k = 0; k < dim; ++k)
           {
             for (const unsigned int q : psi.quadrature_point_indices())
               {
-                const auto                 gradient = phi.get_gradient(q);
+                const auto &gradient = gradients[batch * n_q + q];
                 Tensor<1, dim, Vectorized> column;
                 for (unsigned int c = 0; c < dim; ++c)
                   column[c] = gradient[c][k];
@@ -250,25 +268,19 @@ namespace dyncontact
     // eta_K^2 = int_K |G x - grad x|^2
     std::vector<FEEvaluation<dim, -1, 0, dim, double>> recovered_values(
       dim, FEEvaluation<dim, -1, 0, dim, double>(matrix_free));
-    for (unsigned int batch = 0; batch < matrix_free.n_cell_batches(); ++batch)
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
-        phi.reinit(batch);
-        phi.gather_evaluate(x,
-                            EvaluationFlags::values |
-                              EvaluationFlags::gradients);
         for (unsigned int k = 0; k < dim; ++k)
           {
             recovered_values[k].reinit(batch);
             recovered_values[k].gather_evaluate(recovered[k],
                                                 EvaluationFlags::values);
           }
-        Vectorized squared = 0., values = 0., volume = 0.;
-        for (const unsigned int q : phi.quadrature_point_indices())
+        Vectorized squared = 0.;
+        for (unsigned int q = 0; q < n_q; ++q)
           {
-            const auto gradient = phi.get_gradient(q);
-            values += phi.get_value(q) * phi.get_value(q) * phi.JxW(q);
-            volume += phi.JxW(q);
-            Vectorized sum = 0.;
+            const auto &gradient = gradients[batch * n_q + q];
+            Vectorized  sum      = 0.;
             for (unsigned int k = 0; k < dim; ++k)
               {
                 const auto value = recovered_values[k].get_value(q);
@@ -278,7 +290,7 @@ namespace dyncontact
                     sum += difference * difference;
                   }
               }
-            squared += sum * phi.JxW(q);
+            squared += sum * recovered_values[0].JxW(q);
           }
         for (unsigned int lane = 0;
              lane < matrix_free.n_active_entries_per_cell_batch(batch);
@@ -287,13 +299,15 @@ namespace dyncontact
             // negligible: a gradient error below 1e-9 of the field's mean
             // size over the cell size h (round-off, as for the uniform
             // velocity of a free flight, stays below 1e-12 on the bar of
-            // tests/adaptive_recovery)
-            const double h    = std::pow(volume[lane], 1. / dim);
-            const double mean = std::sqrt(values[lane] / volume[lane]);
-            const double eta  = std::sqrt(squared[lane]);
+            // tests/adaptive_recovery); the bound 1e-9 mean / h sqrt(|K|)
+            // is 1e-9 mean |K|^(1/2 - 1/dim) for h = |K|^(1/dim)
+            const double volume = volumes[batch][lane];
+            const double mean   = std::sqrt(values[batch][lane] / volume);
+            const double eta    = std::sqrt(squared[lane]);
+            const double bound =
+              1e-9 * mean * (dim == 2 ? 1. : std::cbrt(std::sqrt(volume)));
             indicators[matrix_free.get_cell_iterator(batch, lane)
-                         ->active_cell_index()] =
-              (eta > 1e-9 * mean / h * std::sqrt(volume[lane])) ? eta : 0.;
+                         ->active_cell_index()] = (eta > bound) ? eta : 0.;
           }
       }
   }
