@@ -443,13 +443,8 @@ namespace dyncontact
         transferred[i] = *vectors[i];
         ghosted.push_back(&transferred[i]);
       }
-    if (is_serial())
-      serial_transfer =
-        std::make_unique<dealii::SolutionTransfer<dim, VectorType>>(
-          dof_handler);
-    else
-      transfer = std::make_unique<
-        parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
+    transfer = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
     return ghosted;
   }
 
@@ -469,11 +464,17 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::prepare_for_refinement(const VectorType &u,
                                                   const VectorType &udot)
   {
-    const auto vectors = start_transfer({&u, &udot});
-    if (serial_transfer)
-      serial_transfer->prepare_for_coarsening_and_refinement(transferred);
+    if (is_serial())
+      {
+        serial_transfer = std::make_unique<SerialTransfer<dim>>();
+        serial_transfer->prepare(dof_handler, {&u, &udot});
+      }
     else
-      transfer->prepare_for_coarsening_and_refinement(vectors);
+      {
+        // (the transfer object is made by start_transfer())
+        const auto vectors = start_transfer({&u, &udot});
+        transfer->prepare_for_coarsening_and_refinement(vectors);
+      }
   }
 
 
@@ -487,13 +488,8 @@ namespace dyncontact
     reinit_vector(udot);
     if (serial_transfer)
       {
-        std::vector<VectorType> out(2, u);
-        serial_transfer->interpolate(transferred, out);
+        serial_transfer->interpolate(dof_handler, {&u, &udot});
         serial_transfer.reset();
-        for (VectorType &v : out)
-          v.compress(VectorOperation::insert);
-        u    = out[0];
-        udot = out[1];
       }
     else
       {

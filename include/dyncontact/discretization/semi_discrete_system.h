@@ -11,9 +11,9 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-#include <deal.II/numerics/solution_transfer.h>
 
 #include <dyncontact/discretization/elastic_operator.h>
+#include <dyncontact/discretization/serial_transfer.h>
 #include <dyncontact/scenes/interface.h>
 
 #include <functional>
@@ -415,17 +415,18 @@ namespace dyncontact
     VectorType           load;
     VectorType           boundary_weights;
 
-    /// A state in transfer (refinement or checkpoint) and its ghosted copy:
-    /// p4est's transfer, or deal.II's on a serial triangulation.
+    /// A state in transfer (refinement or checkpoint) and its ghosted copy
+    /// for p4est's transfer, or the transfer on a serial triangulation.
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
-                                                               transfer;
-    std::unique_ptr<dealii::SolutionTransfer<dim, VectorType>> serial_transfer;
-    std::vector<VectorType>                                    transferred;
+                                         transfer;
+    std::vector<VectorType>              transferred;
+    std::unique_ptr<SerialTransfer<dim>> serial_transfer;
     /// Whether the DoFs are on deal.II's serial triangulation.
     bool
     is_serial() const;
-    /// Copies @p vectors into ghosted vectors and starts a new transfer
-    /// object on the current DoFs; returns the vectors to hand to it.
+    /// Copies @p vectors into ghosted vectors and starts a new p4est
+    /// transfer object on the current DoFs; returns the vectors to hand to
+    /// it.
     std::vector<const VectorType *>
     start_transfer(const std::vector<const VectorType *> &vectors);
   };

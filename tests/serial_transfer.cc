@@ -1,0 +1,163 @@
+// The transfer of vectors through a refinement of deal.II's serial
+// triangulation (Mesh/Triangulation = serial) against deal.II 9.4's own
+// SolutionTransfer, which the program used before: on meshes with hanging
+// nodes, cells refined, cells coarsened and cells kept in one adaptation,
+// for 2D p = 1, 2, 3 and 3D p = 1, 2, two vectors transferred at once:
+// - the values are equal bit for bit (the same reads, the same restriction
+//   and prolongation matrices, and a DoF shared by cells takes the value of
+//   the same cell);
+// - the transfer of the interpolant of a polynomial of degree p (in the
+//   space, so kept by refinement and by coarsening) is its interpolant on
+//   the new mesh to round-off (the second vector, of degree p + 1, is not
+//   in the space: its bits tell the order of the writes).
+
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/solution_transfer.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <dyncontact/discretization/serial_transfer.h>
+
+#include "tests.h"
+
+using namespace dealii;
+
+namespace
+{
+  /// Component c: a polynomial of degree p in each coordinate, away from 0.
+  template <int dim>
+  class Polynomial : public Function<dim>
+  {
+  public:
+    Polynomial(const unsigned int p, const double shift)
+      : Function<dim>(dim)
+      , p(p)
+      , shift(shift)
+    {}
+
+    double
+    value(const Point<dim> &x, const unsigned int c) const override
+    {
+      double v = 2. + shift + c;
+      for (unsigned int d = 0; d < dim; ++d)
+        v += (0.3 + 0.1 * d + 0.05 * c) * std::pow(x[d] + shift, p);
+      return v;
+    }
+
+  private:
+    const unsigned int p;
+    const double       shift;
+  };
+
+
+
+  template <int dim>
+  void
+  run(const unsigned int p)
+  {
+    Triangulation<dim> tria(
+      Triangulation<dim>::limit_level_difference_at_vertices);
+    std::vector<unsigned int> cells(dim, 2);
+    cells[0] = 4;
+    Point<dim> far;
+    for (unsigned int d = 0; d < dim; ++d)
+      far[d] = (d == 0) ? 2. : 1.;
+    GridGenerator::subdivided_hyper_rectangle(tria, cells, Point<dim>(), far);
+    tria.refine_global(1);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->center()[0] < 0.8)
+        cell->set_refine_flag();
+    tria.execute_coarsening_and_refinement();
+
+    FESystem<dim>   fe(FE_Q<dim>(p), dim);
+    DoFHandler<dim> dofs(tria);
+    dofs.distribute_dofs(fe);
+    const auto interpolant = [&](const unsigned int degree) {
+      AffineConstraints<double> hanging;
+      DoFTools::make_hanging_node_constraints(dofs, hanging);
+      hanging.close();
+      Vector<double> v(dofs.n_dofs());
+      VectorTools::interpolate(dofs, Polynomial<dim>(degree, 0.1 * degree), v);
+      hanging.distribute(v);
+      return v;
+    };
+    const std::vector<Vector<double>>          old = {interpolant(p),
+                                                      interpolant(p + 1)};
+    std::vector<TrilinosWrappers::MPI::Vector> old_t;
+    for (const auto &v : old)
+      {
+        old_t.emplace_back(complete_index_set(dofs.n_dofs()), MPI_COMM_SELF);
+        for (unsigned int i = 0; i < v.size(); ++i)
+          old_t.back()[i] = v[i];
+        old_t.back().compress(VectorOperation::insert);
+      }
+
+    // coarsen the finest cells near x = 0, refine a band around x = 1
+    const unsigned int n_before = tria.n_active_cells();
+    unsigned int       n_refine = 0, n_coarsen = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->level() == 2 && cell->center()[0] < 0.25)
+        cell->set_coarsen_flag();
+      else if (cell->center()[0] > 0.9 && cell->center()[0] < 1.3)
+        cell->set_refine_flag();
+    tria.prepare_coarsening_and_refinement();
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        n_refine += cell->refine_flag_set() ? 1 : 0;
+        n_coarsen += cell->coarsen_flag_set() ? 1 : 0;
+      }
+
+    SolutionTransfer<dim, Vector<double>> reference(dofs);
+    reference.prepare_for_coarsening_and_refinement(old);
+    dyncontact::SerialTransfer<dim> transfer;
+    transfer.prepare(dofs, {&old_t[0], &old_t[1]});
+    tria.execute_coarsening_and_refinement();
+    dofs.distribute_dofs(fe);
+
+    std::vector<Vector<double>> expected(2, Vector<double>(dofs.n_dofs()));
+    reference.interpolate(old, expected);
+    std::vector<TrilinosWrappers::MPI::Vector> new_t(
+      2,
+      TrilinosWrappers::MPI::Vector(complete_index_set(dofs.n_dofs()),
+                                    MPI_COMM_SELF));
+    transfer.interpolate(dofs, {&new_t[0], &new_t[1]});
+
+    bool                 equal = true;
+    double               error = 0.;
+    const Vector<double> exact = interpolant(p);
+    for (unsigned int i = 0; i < dofs.n_dofs(); ++i)
+      {
+        for (unsigned int j = 0; j < 2; ++j)
+          equal = equal && (new_t[j][i] == expected[j][i]);
+        error = std::max(error, std::abs(new_t[0][i] - exact[i]));
+      }
+    testing::log() << dim << "D p = " << p << ": cells " << n_before << " -> "
+                   << tria.n_active_cells() << " (" << n_refine << " refined, "
+                   << n_coarsen << " coarsened), two vectors of "
+                   << dofs.n_dofs()
+                   << " DoFs: equal to deal.II's SolutionTransfer bit for "
+                   << "bit: " << testing::check(equal)
+                   << "; the polynomial's interpolant kept (error < 1e-12): "
+                   << testing::check(error < 1e-12) << "\n";
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  for (const unsigned int p : {1, 2, 3})
+    run<2>(p);
+  for (const unsigned int p : {1, 2})
+    run<3>(p);
+}
