@@ -115,7 +115,6 @@ namespace dyncontact
                            const ConditionalOStream      &pcout)
   {
     rows.rows.clear();
-    row_scalar_dofs.clear();
     unmatched.clear();
     master_surfaces.clear();
     locally_owned              = system.locally_owned_dofs();
@@ -219,20 +218,17 @@ namespace dyncontact
     std::map<types::global_dof_index, unsigned int> nearest;
     for (unsigned int r = 0; r < rows.size(); ++r)
       {
-        const auto [it, inserted] = nearest.emplace(row_scalar_dofs[r], r);
+        const auto [it, inserted] =
+          nearest.emplace(rows.rows[r].entries[0].first, r);
         if (!inserted && rows.rows[r].gap < rows.rows[it->second].gap)
           it->second = r;
       }
     if (nearest.size() == rows.size())
       return;
-    ContactRows                          kept;
-    std::vector<types::global_dof_index> kept_dofs;
+    ContactRows kept;
     for (unsigned int r = 0; r < rows.size(); ++r)
-      if (nearest[row_scalar_dofs[r]] == r)
-        {
-          kept.rows.push_back(rows.rows[r]);
-          kept_dofs.push_back(row_scalar_dofs[r]);
-        }
+      if (nearest[rows.rows[r].entries[0].first] == r)
+        kept.rows.push_back(rows.rows[r]);
       else
         {
           // the farther master can still come nearer later (the rows are
@@ -249,8 +245,7 @@ namespace dyncontact
             }
           unmatched.push_back(node);
         }
-    rows            = std::move(kept);
-    row_scalar_dofs = std::move(kept_dofs);
+    rows = std::move(kept);
   }
 
 
@@ -262,16 +257,12 @@ namespace dyncontact
     const Mapping<dim>                    &mapping,
     const std::vector<types::boundary_id> &ids) const
   {
-    const auto &fe                 = system.get_fe();
-    const auto &scalar_fe          = system.get_scalar_fe();
-    const auto &scalar_dof_handler = system.get_scalar_dof_handler();
+    const auto                          &fe        = system.get_fe();
+    const auto                          &scalar_fe = system.get_scalar_fe();
     std::vector<BoundaryNode>            nodes;
     std::set<types::global_dof_index>    seen;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> scalar_dofs(
-      scalar_fe.n_dofs_per_cell());
     const auto &unit_points = scalar_fe.get_unit_support_points();
-    auto        scalar_cell = scalar_dof_handler.begin_active();
     for (const auto &cell : system.get_dof_handler().active_cell_iterators())
       {
         if (cell->is_locally_owned())
@@ -282,7 +273,6 @@ namespace dyncontact
                           cell->face(face)->boundary_id()) != ids.end())
               {
                 cell->get_dof_indices(dofs);
-                scalar_cell->get_dof_indices(scalar_dofs);
                 for (unsigned int node = 0; node < scalar_fe.n_dofs_per_cell();
                      ++node)
                   {
@@ -299,11 +289,9 @@ namespace dyncontact
                     nodes.push_back(
                       {mapping.transform_unit_to_real_cell(cell,
                                                            unit_points[node]),
-                       node_dofs,
-                       scalar_dofs[node]});
+                       node_dofs});
                   }
               }
-        ++scalar_cell;
       }
     return nodes;
   }
@@ -357,7 +345,6 @@ namespace dyncontact
   template <int dim>
   void
   ContactSetup<dim>::add_row(ContactRow                      &row,
-                             const types::global_dof_index    scalar_dof,
                              const VectorType                &w_ghosted,
                              const AffineConstraints<double> &constraints)
   {
@@ -373,10 +360,7 @@ namespace dyncontact
         best = d;
     row.eliminated = std::max(best, 0);
     if (best >= 0)
-      {
-        rows.rows.push_back(row);
-        row_scalar_dofs.push_back(scalar_dof);
-      }
+      rows.rows.push_back(row);
   }
 
 
@@ -423,7 +407,7 @@ namespace dyncontact
             Utilities::to_string(-row.gap) +
             " m inside it. Correct the scene, or set "
             "'Contact/Initial penetration = project'.";
-        add_row(row, node.scalar_dof, w_ghosted, constraints);
+        add_row(row, w_ghosted, constraints);
       }
     // (every rank stops, also those without such a node)
     stop_with_any_message(penetration, comm);
@@ -551,7 +535,7 @@ namespace dyncontact
                                                 system.get_fe().degree);
         row.pair                 = pair_index;
         const std::size_t n_rows = rows.size();
-        add_row(row, node.scalar_dof, w_ghosted, system.get_constraints());
+        add_row(row, w_ghosted, system.get_constraints());
         if (rows.size() == n_rows &&
             fixed_by_dirichlet_data(row, system.get_constraints()))
           ++n_clamped;

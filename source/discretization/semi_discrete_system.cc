@@ -74,16 +74,15 @@ namespace dyncontact
         // mesh: a DoF handler without DoFs must not take part in a
         // refinement of the triangulation
         dof_handler.reinit(triangulation);
-        scalar_dof_handler.reinit(triangulation);
         attached = true;
       }
+    // the scalar DoFs of the mesh before are released (they took part in
+    // its refinement numbered, as a DoF handler must) and numbered again
+    // where needed
+    scalar.reset();
     dof_handler.distribute_dofs(fe);
-    scalar_dof_handler.distribute_dofs(scalar_fe);
     locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
-    scalar_locally_owned = scalar_dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(scalar_dof_handler,
-                                            scalar_locally_relevant);
 
     make_constraints(scene);
     // M, A, B share the sparsity pattern of the unconstrained operator;
@@ -147,44 +146,35 @@ namespace dyncontact
   void
   SemiDiscreteSystem<dim>::index_owned_nodes(const unsigned int n_bodies)
   {
-    // one pass over the locally owned cells: for each locally owned node its
-    // component-0 DoF and scalar DoF, and for each locally owned DoF its
+    // one pass over the locally owned cells: for each locally owned DoF its
     // slot body * dim + component (the momentum's sums)
-    owned_system0_to_scalar.clear();
     constexpr unsigned char unset = std::numeric_limits<unsigned char>::max();
     owned_dof_slots.assign(locally_owned.n_elements(), unset);
     n_owned_body_dofs.assign(n_bodies, 0);
     {
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      std::vector<types::global_dof_index> scalar_dofs(
-        scalar_fe.n_dofs_per_cell());
-      auto scalar_cell = scalar_dof_handler.begin_active();
       for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(dofs);
-              scalar_cell->get_dof_indices(scalar_dofs);
-              const types::material_id body = cell->material_id();
-              for (unsigned int node = 0; node < scalar_dofs.size(); ++node)
-                {
-                  const auto dof0 = dofs[fe.component_to_system_index(0, node)];
-                  if (!locally_owned.is_element(dof0))
-                    continue;
-                  // (a node's DoFs are owned together)
-                  const auto k0 = locally_owned.index_within_set(dof0);
-                  if (owned_dof_slots[k0] != unset)
-                    continue;
-                  owned_system0_to_scalar.emplace_back(dof0, scalar_dofs[node]);
-                  for (unsigned int c = 0; c < dim; ++c)
-                    owned_dof_slots[locally_owned.index_within_set(
-                      dofs[fe.component_to_system_index(c, node)])] =
-                      body * dim + c;
-                  n_owned_body_dofs[body] += dim;
-                }
-            }
-          ++scalar_cell;
-        }
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            const types::material_id body = cell->material_id();
+            for (unsigned int node = 0; node < scalar_fe.n_dofs_per_cell();
+                 ++node)
+              {
+                const auto dof0 = dofs[fe.component_to_system_index(0, node)];
+                if (!locally_owned.is_element(dof0))
+                  continue;
+                // (a node's DoFs are owned together)
+                const auto k0 = locally_owned.index_within_set(dof0);
+                if (owned_dof_slots[k0] != unset)
+                  continue;
+                for (unsigned int c = 0; c < dim; ++c)
+                  owned_dof_slots[locally_owned.index_within_set(
+                    dofs[fe.component_to_system_index(c, node)])] =
+                    body * dim + c;
+                n_owned_body_dofs[body] += dim;
+              }
+          }
     }
 
     // AMG's near-null space: the rigid translations, one per component,
@@ -193,6 +183,48 @@ namespace dyncontact
     constant_modes.assign(dim, std::vector<bool>(owned_dof_slots.size()));
     for (std::size_t k = 0; k < owned_dof_slots.size(); ++k)
       constant_modes[owned_dof_slots[k] % dim][k] = true;
+  }
+
+
+
+  template <int dim>
+  const typename SemiDiscreteSystem<dim>::ScalarDoFs &
+  SemiDiscreteSystem<dim>::scalar_dofs() const
+  {
+    if (scalar)
+      return *scalar;
+    scalar = std::make_unique<ScalarDoFs>(dof_handler.get_triangulation());
+    scalar->dof_handler.distribute_dofs(scalar_fe);
+    scalar->locally_owned = scalar->dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(scalar->dof_handler,
+                                            scalar->locally_relevant);
+    // each locally owned node once, in the order of the cells
+    std::vector<bool>                    seen(locally_owned.n_elements());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> node_dofs(scalar_fe.n_dofs_per_cell());
+    auto scalar_cell = scalar->dof_handler.begin_active();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            scalar_cell->get_dof_indices(node_dofs);
+            for (unsigned int node = 0; node < node_dofs.size(); ++node)
+              {
+                const auto dof0 = dofs[fe.component_to_system_index(0, node)];
+                if (!locally_owned.is_element(dof0))
+                  continue;
+                const auto k0 = locally_owned.index_within_set(dof0);
+                if (seen[k0])
+                  continue;
+                seen[k0] = true;
+                scalar->owned_system0_to_scalar.emplace_back(dof0,
+                                                             node_dofs[node]);
+              }
+          }
+        ++scalar_cell;
+      }
+    return *scalar;
   }
 
 
@@ -213,12 +245,13 @@ namespace dyncontact
       vector.compress();
       return vector;
     };
-    bool expanded = expand(scalar_locally_owned) == locally_owned &&
-                    expand(scalar_locally_relevant) == locally_relevant;
+    const ScalarDoFs &numbered = scalar_dofs();
+    bool expanded = expand(numbered.locally_owned) == locally_owned &&
+                    expand(numbered.locally_relevant) == locally_relevant;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> scalar_dofs(
       scalar_fe.n_dofs_per_cell());
-    auto scalar_cell = scalar_dof_handler.begin_active();
+    auto scalar_cell = numbered.dof_handler.begin_active();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (expanded && !cell->is_artificial())
@@ -252,13 +285,15 @@ namespace dyncontact
     // work of the vector element's (3D bar at 1e6 DoFs: 'setup: DoFs and
     // sparsity' 2.5 s with the vector element's pattern made into deal.II's
     // Trilinos sparsity pattern, 1.3 s so); otherwise the vector element's.
-    const bool      expanded = vector_dofs_expand_scalar_dofs();
-    const IndexSet &rows     = expanded ? scalar_locally_owned : locally_owned;
-    const IndexSet &columns =
-      expanded ? scalar_locally_relevant : locally_relevant;
+    const bool        expanded = vector_dofs_expand_scalar_dofs();
+    const ScalarDoFs &numbered = scalar_dofs();
+    const IndexSet   &rows = expanded ? numbered.locally_owned : locally_owned;
+    const IndexSet   &columns =
+      expanded ? numbered.locally_relevant : locally_relevant;
     const unsigned int     block = expanded ? dim : 1;
     DynamicSparsityPattern dsp(columns);
-    DoFTools::make_sparsity_pattern(expanded ? scalar_dof_handler : dof_handler,
+    DoFTools::make_sparsity_pattern(expanded ? numbered.dof_handler :
+                                               dof_handler,
                                     dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, rows, comm, columns);
 

@@ -85,11 +85,16 @@ namespace dyncontact
                          const VectorType              &solution,
                          const MPI_Comm                 comm)
     {
-      const ContactRows &rows            = contact.get_rows();
-      const auto        &row_scalar_dofs = contact.get_row_scalar_dofs();
-      const auto &scalar_locally_owned   = system.scalar_locally_owned_dofs();
-      const auto &scalar_locally_relevant =
-        system.scalar_locally_relevant_dofs();
+      const ContactRows &rows                    = contact.get_rows();
+      const auto        &scalar                  = system.scalar_dofs();
+      const auto        &scalar_locally_owned    = scalar.locally_owned;
+      const auto        &scalar_locally_relevant = scalar.locally_relevant;
+      // the scalar DoF of each locally owned node by its component-0 DoF
+      // (a row's slave node is owned here, its first entry that DoF)
+      const IndexSet                      &owned = system.locally_owned_dofs();
+      std::vector<types::global_dof_index> scalar_of(owned.n_elements());
+      for (const auto &[dof0, scalar_dof] : scalar.owned_system0_to_scalar)
+        scalar_of[owned.index_within_set(dof0)] = scalar_dof;
 
       VectorType master_force(system.locally_owned_dofs(), comm);
       const auto violation =
@@ -99,17 +104,18 @@ namespace dyncontact
         critical(scalar_locally_owned, comm), gap(scalar_locally_owned, comm);
       for (unsigned int p = 0; p < rows.size(); ++p)
         {
-          const double force           = row_force(report, p);
-          pressure(row_scalar_dofs[p]) = force / rows.rows[p].weight;
-          active(row_scalar_dofs[p])   = report.active[p];
-          critical(row_scalar_dofs[p]) = report.critical[p];
-          gap(row_scalar_dofs[p])      = -violation[p];
+          const double force = row_force(report, p);
+          const auto   node =
+            scalar_of[owned.index_within_set(rows.rows[p].entries[0].first)];
+          pressure(node) = force / rows.rows[p].weight;
+          active(node)   = report.active[p];
+          critical(node) = report.critical[p];
+          gap(node)      = -violation[p];
           for (const auto &[dof0, N] : rows.rows[p].master_nodes)
             master_force(dof0) += N * force;
         }
       master_force.compress(VectorOperation::add);
-      for (const auto &[dof0, scalar_dof] :
-           system.get_owned_system0_to_scalar())
+      for (const auto &[dof0, scalar_dof] : scalar.owned_system0_to_scalar)
         if (master_force(dof0) != 0.)
           pressure(scalar_dof) =
             master_force(dof0) / system.get_boundary_weights()(dof0);
@@ -207,17 +213,17 @@ namespace dyncontact
         data_out.add_data_vector(system.get_dof_handler(),
                                  u_ghosted,
                                  von_mises);
-        data_out.add_data_vector(system.get_scalar_dof_handler(),
+        data_out.add_data_vector(system.scalar_dofs().dof_handler,
                                  contact.pressure,
                                  "contact_pressure");
-        data_out.add_data_vector(system.get_scalar_dof_handler(),
+        data_out.add_data_vector(system.scalar_dofs().dof_handler,
                                  contact.active,
                                  "active_set");
-        data_out.add_data_vector(system.get_scalar_dof_handler(),
+        data_out.add_data_vector(system.scalar_dofs().dof_handler,
                                  contact.critical,
                                  "critical_set");
         if (!scene.contact_pairs().empty())
-          data_out.add_data_vector(system.get_scalar_dof_handler(),
+          data_out.add_data_vector(system.scalar_dofs().dof_handler,
                                    contact.gap,
                                    "gap");
         data_out.add_data_vector(subdomain, "subdomain");

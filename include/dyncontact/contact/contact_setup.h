@@ -94,14 +94,6 @@ namespace dyncontact
     void
     load(const std::map<std::string, std::string> &state);
 
-    /// For each of this rank's rows, the scalar DoF of its slave node (for
-    /// output).
-    const std::vector<types::global_dof_index> &
-    get_row_scalar_dofs() const
-    {
-      return row_scalar_dofs;
-    }
-
     /// The deepest penetration of a slave node without a constraint row.
     struct Penetration
     {
@@ -164,13 +156,12 @@ namespace dyncontact
     }
 
   private:
-    /// A locally owned node on the contact boundary: its position, its
-    /// DoFs and its scalar DoF.
+    /// A locally owned node on the contact boundary: its position and its
+    /// DoFs.
     struct BoundaryNode
     {
       Point<dim>                               x;
       std::array<types::global_dof_index, dim> dofs;
-      types::global_dof_index                  scalar_dof;
     };
 
     /// The locally owned, non-hanging nodes on the boundary parts @p ids,
@@ -184,7 +175,6 @@ namespace dyncontact
     /// component) and keeps it, unless no component of its node is free.
     void
     add_row(ContactRow                      &row,
-            const types::global_dof_index    scalar_dof,
             const VectorType                &w_ghosted,
             const AffineConstraints<double> &constraints);
 
@@ -266,11 +256,10 @@ namespace dyncontact
     std::vector<std::array<std::string, 2>> side_bodies;
     /// Whether the scene has more than one pair (the obstacle counted):
     /// messages and the banner number them.
-    bool                                 several_pairs = false;
-    IndexSet                             locally_owned;
-    IndexSet                             locally_relevant;
-    std::vector<types::global_dof_index> row_scalar_dofs;
-    ContactRowOperator                   row_operator;
+    bool               several_pairs = false;
+    IndexSet           locally_owned;
+    IndexSet           locally_relevant;
+    ContactRowOperator row_operator;
     /// Per pair: the slave side (0, 1) of the last set-up, and those kept by
     /// keep_slave_sides() (empty: chosen anew at each set-up).
     std::vector<unsigned int> slave_sides;

@@ -240,12 +240,26 @@ namespace dyncontact
     {
       return dof_handler;
     }
-    /// Scalar FE_Q(p) on the same mesh, for nodal contact fields.
-    const DoFHandler<dim> &
-    get_scalar_dof_handler() const
+    /// The scalar FE_Q(p) on the same mesh, for the nodal contact fields of
+    /// the output and the sparsity pattern: its DoFs, the locally owned and
+    /// relevant ones, and (component-0 system DoF, scalar DoF) of each node
+    /// owned here, in the order of the cells.
+    struct ScalarDoFs
     {
-      return scalar_dof_handler;
-    }
+      explicit ScalarDoFs(const Triangulation<dim> &triangulation)
+        : dof_handler(triangulation)
+      {}
+      DoFHandler<dim> dof_handler;
+      IndexSet        locally_owned;
+      IndexSet        locally_relevant;
+      std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+        owned_system0_to_scalar;
+    };
+    /// The scalar DoFs of the current mesh, numbered at the first call
+    /// after each setup() (collective then): a mesh adaptation that no
+    /// output and no sparsity pattern follows does not number them.
+    const ScalarDoFs &
+    scalar_dofs() const;
     const IndexSet &
     locally_owned_dofs() const
     {
@@ -255,16 +269,6 @@ namespace dyncontact
     locally_relevant_dofs() const
     {
       return locally_relevant;
-    }
-    const IndexSet &
-    scalar_locally_owned_dofs() const
-    {
-      return scalar_locally_owned;
-    }
-    const IndexSet &
-    scalar_locally_relevant_dofs() const
-    {
-      return scalar_locally_relevant;
     }
     /// Hanging nodes and homogeneous Dirichlet data.
     const AffineConstraints<double> &
@@ -346,14 +350,6 @@ namespace dyncontact
     /// computed on each call.
     std::vector<VectorType>
     rotation_modes() const;
-    /// (component-0 system DoF, scalar DoF) of each node owned here, in the
-    /// order of the cells.
-    const std::vector<
-      std::pair<types::global_dof_index, types::global_dof_index>> &
-    get_owned_system0_to_scalar() const
-    {
-      return owned_system0_to_scalar;
-    }
 
   private:
     const Parameters    parameters;
@@ -365,18 +361,15 @@ namespace dyncontact
     FESystem<dim>   fe;
     DoFHandler<dim> dof_handler;
     FE_Q<dim>       scalar_fe;
-    DoFHandler<dim> scalar_dof_handler;
+    /// (null until scalar_dofs() numbers them on the current mesh)
+    mutable std::unique_ptr<ScalarDoFs> scalar;
 
     IndexSet                             locally_owned;
     IndexSet                             locally_relevant;
-    IndexSet                             scalar_locally_owned;
-    IndexSet                             scalar_locally_relevant;
     AffineConstraints<double>            constraints;
     std::vector<types::global_dof_index> n_owned_body_dofs;
     std::vector<unsigned char>           owned_dof_slots;
     std::vector<std::vector<bool>>       constant_modes;
-    std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-      owned_system0_to_scalar;
 
     /// The sparsity pattern of the unconstrained operator (locally owned
     /// rows, columns of the locally relevant DoFs), shared by the matrices
@@ -385,9 +378,8 @@ namespace dyncontact
     /// Hanging nodes and the scene's homogeneous Dirichlet data.
     void
     make_constraints(const Scene<dim> &scene);
-    /// For each locally owned node its component-0 and scalar DoF, for each
-    /// locally owned DoF its body and component, the DoFs of each body and
-    /// the rigid translations.
+    /// For each locally owned DoF its body and component, the DoFs of each
+    /// body and the rigid translations.
     void
     index_owned_nodes(const unsigned int n_bodies);
     /// Makes the graph (in setup()).
