@@ -2,14 +2,18 @@
 // triangulation (Mesh/Triangulation = serial) against deal.II 9.4's own
 // SolutionTransfer, which the program used before: on meshes with hanging
 // nodes, cells refined, cells coarsened and cells kept in one adaptation,
-// for 2D p = 1, 2, 3 and 3D p = 1, 2, two vectors transferred at once:
-// - the values are equal bit for bit (the same reads, the same restriction
-//   and prolongation matrices, and a DoF shared by cells takes the value of
-//   the same cell);
+// for 2D p = 1, 2, 3 and 3D p = 1, 2, three adaptations in a row (the
+// second adds a finest level, the third removes it), two vectors
+// transferred at once:
+// - the values are equal bit for bit to those of deal.II's transfer of the
+//   same Trilinos vectors (the same reads, the same restriction and
+//   prolongation matrices, and a DoF shared by cells takes the value of the
+//   same cell); the second vector is random and satisfies no hanging-node
+//   constraint, so that the cells sharing a DoF give it different values
+//   and the order of the writes shows;
 // - the transfer of the interpolant of a polynomial of degree p (in the
 //   space, so kept by refinement and by coarsening) is its interpolant on
-//   the new mesh to round-off (the second vector, of degree p + 1, is not
-//   in the space: its bits tell the order of the writes).
+//   the new mesh to round-off.
 
 #include <deal.II/base/function.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -25,6 +29,9 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <dyncontact/discretization/serial_transfer.h>
+
+#include <functional>
+#include <random>
 
 #include "tests.h"
 
@@ -80,73 +87,102 @@ namespace
     FESystem<dim>   fe(FE_Q<dim>(p), dim);
     DoFHandler<dim> dofs(tria);
     dofs.distribute_dofs(fe);
-    const auto interpolant = [&](const unsigned int degree) {
+    using TrilinosVector  = TrilinosWrappers::MPI::Vector;
+    const auto new_vector = [&]() {
+      return TrilinosVector(complete_index_set(dofs.n_dofs()), MPI_COMM_SELF);
+    };
+    // the interpolant of the polynomial on the current mesh
+    const auto interpolant = [&]() {
       AffineConstraints<double> hanging;
       DoFTools::make_hanging_node_constraints(dofs, hanging);
       hanging.close();
       Vector<double> v(dofs.n_dofs());
-      VectorTools::interpolate(dofs, Polynomial<dim>(degree, 0.1 * degree), v);
+      VectorTools::interpolate(dofs, Polynomial<dim>(p, 0.1), v);
       hanging.distribute(v);
       return v;
     };
-    const std::vector<Vector<double>>          old = {interpolant(p),
-                                                      interpolant(p + 1)};
-    std::vector<TrilinosWrappers::MPI::Vector> old_t;
-    for (const auto &v : old)
+    std::vector<TrilinosVector> state(2, new_vector());
+    {
+      const Vector<double>                   v = interpolant();
+      std::mt19937                           random(p + 10 * dim);
+      std::uniform_real_distribution<double> uniform(-1., 1.);
+      for (unsigned int i = 0; i < v.size(); ++i)
+        {
+          state[0][i] = v[i];
+          state[1][i] = uniform(random);
+        }
+      for (auto &vector : state)
+        vector.compress(VectorOperation::insert);
+    }
+
+    // three adaptations: the finest cells near x = 0 coarsened and a band
+    // around x = 1 refined; a new finest level in it; that level removed
+    // again by coarsening and another band refined
+    const std::vector<std::function<void(
+      const typename Triangulation<dim>::active_cell_iterator &)>>
+      flags = {[](const auto &cell) {
+                 if (cell->level() == 2 && cell->center()[0] < 0.25)
+                   cell->set_coarsen_flag();
+                 else if (cell->center()[0] > 0.9 && cell->center()[0] < 1.3)
+                   cell->set_refine_flag();
+               },
+               [](const auto &cell) {
+                 if (cell->center()[0] > 1.0 && cell->center()[0] < 1.2)
+                   cell->set_refine_flag();
+               },
+               [](const auto &cell) {
+                 if (cell->level() == 3)
+                   cell->set_coarsen_flag();
+                 else if (cell->center()[0] > 1.5 && cell->center()[0] < 1.8)
+                   cell->set_refine_flag();
+               }};
+    for (unsigned int a = 0; a < flags.size(); ++a)
       {
-        old_t.emplace_back(complete_index_set(dofs.n_dofs()), MPI_COMM_SELF);
-        for (unsigned int i = 0; i < v.size(); ++i)
-          old_t.back()[i] = v[i];
-        old_t.back().compress(VectorOperation::insert);
+        const unsigned int n_before      = tria.n_active_cells();
+        const unsigned int levels_before = tria.n_levels();
+        unsigned int       n_refine = 0, n_coarsen = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          flags[a](cell);
+        tria.prepare_coarsening_and_refinement();
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            n_refine += cell->refine_flag_set() ? 1 : 0;
+            n_coarsen += cell->coarsen_flag_set() ? 1 : 0;
+          }
+
+        // deal.II's transfer on the Trilinos vectors, as the program used it
+        SolutionTransfer<dim, TrilinosVector> reference(dofs);
+        reference.prepare_for_coarsening_and_refinement(state);
+        dyncontact::SerialTransfer<dim> transfer;
+        transfer.prepare(dofs, {&state[0], &state[1]});
+        tria.execute_coarsening_and_refinement();
+        dofs.distribute_dofs(fe);
+
+        std::vector<TrilinosVector> expected(2, new_vector());
+        reference.interpolate(state, expected);
+        std::vector<TrilinosVector> transferred(2, new_vector());
+        transfer.interpolate(dofs, {&transferred[0], &transferred[1]});
+
+        bool                 equal = true;
+        double               error = 0.;
+        const Vector<double> exact = interpolant();
+        for (unsigned int i = 0; i < dofs.n_dofs(); ++i)
+          {
+            for (unsigned int j = 0; j < 2; ++j)
+              equal = equal && (transferred[j][i] == expected[j][i]);
+            error = std::max(error, std::abs(transferred[0][i] - exact[i]));
+          }
+        testing::log()
+          << dim << "D p = " << p << ", adaptation " << a + 1 << ": cells "
+          << n_before << " -> " << tria.n_active_cells() << ", levels "
+          << levels_before << " -> " << tria.n_levels() << " (" << n_refine
+          << " refined, " << n_coarsen << " coarsened), " << dofs.n_dofs()
+          << " DoFs: equal to deal.II's SolutionTransfer bit for bit: "
+          << testing::check(equal)
+          << "; the polynomial's interpolant kept (error < 1e-12): "
+          << testing::check(error < 1e-12) << "\n";
+        state = std::move(transferred);
       }
-
-    // coarsen the finest cells near x = 0, refine a band around x = 1
-    const unsigned int n_before = tria.n_active_cells();
-    unsigned int       n_refine = 0, n_coarsen = 0;
-    for (const auto &cell : tria.active_cell_iterators())
-      if (cell->level() == 2 && cell->center()[0] < 0.25)
-        cell->set_coarsen_flag();
-      else if (cell->center()[0] > 0.9 && cell->center()[0] < 1.3)
-        cell->set_refine_flag();
-    tria.prepare_coarsening_and_refinement();
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        n_refine += cell->refine_flag_set() ? 1 : 0;
-        n_coarsen += cell->coarsen_flag_set() ? 1 : 0;
-      }
-
-    SolutionTransfer<dim, Vector<double>> reference(dofs);
-    reference.prepare_for_coarsening_and_refinement(old);
-    dyncontact::SerialTransfer<dim> transfer;
-    transfer.prepare(dofs, {&old_t[0], &old_t[1]});
-    tria.execute_coarsening_and_refinement();
-    dofs.distribute_dofs(fe);
-
-    std::vector<Vector<double>> expected(2, Vector<double>(dofs.n_dofs()));
-    reference.interpolate(old, expected);
-    std::vector<TrilinosWrappers::MPI::Vector> new_t(
-      2,
-      TrilinosWrappers::MPI::Vector(complete_index_set(dofs.n_dofs()),
-                                    MPI_COMM_SELF));
-    transfer.interpolate(dofs, {&new_t[0], &new_t[1]});
-
-    bool                 equal = true;
-    double               error = 0.;
-    const Vector<double> exact = interpolant(p);
-    for (unsigned int i = 0; i < dofs.n_dofs(); ++i)
-      {
-        for (unsigned int j = 0; j < 2; ++j)
-          equal = equal && (new_t[j][i] == expected[j][i]);
-        error = std::max(error, std::abs(new_t[0][i] - exact[i]));
-      }
-    testing::log() << dim << "D p = " << p << ": cells " << n_before << " -> "
-                   << tria.n_active_cells() << " (" << n_refine << " refined, "
-                   << n_coarsen << " coarsened), two vectors of "
-                   << dofs.n_dofs()
-                   << " DoFs: equal to deal.II's SolutionTransfer bit for "
-                   << "bit: " << testing::check(equal)
-                   << "; the polynomial's interpolant kept (error < 1e-12): "
-                   << testing::check(error < 1e-12) << "\n";
   }
 } // namespace
 

@@ -193,16 +193,18 @@ namespace dyncontact
   {
     if (scalar)
       return *scalar;
-    scalar = std::make_unique<ScalarDoFs>(dof_handler.get_triangulation());
-    scalar->dof_handler.distribute_dofs(scalar_fe);
-    scalar->locally_owned = scalar->dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(scalar->dof_handler,
-                                            scalar->locally_relevant);
+    // (kept only once complete)
+    auto numbered =
+      std::make_unique<ScalarDoFs>(dof_handler.get_triangulation());
+    numbered->dof_handler.distribute_dofs(scalar_fe);
+    numbered->locally_owned = numbered->dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(numbered->dof_handler,
+                                            numbered->locally_relevant);
     // each locally owned node once, in the order of the cells
     std::vector<bool>                    seen(locally_owned.n_elements());
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> node_dofs(scalar_fe.n_dofs_per_cell());
-    auto scalar_cell = scalar->dof_handler.begin_active();
+    auto scalar_cell = numbered->dof_handler.begin_active();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (cell->is_locally_owned())
@@ -218,12 +220,13 @@ namespace dyncontact
                 if (seen[k0])
                   continue;
                 seen[k0] = true;
-                scalar->owned_system0_to_scalar.emplace_back(dof0,
-                                                             node_dofs[node]);
+                numbered->owned_system0_to_scalar.emplace_back(dof0,
+                                                               node_dofs[node]);
               }
           }
         ++scalar_cell;
       }
+    scalar = std::move(numbered);
     return *scalar;
   }
 
