@@ -24,6 +24,42 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// Calls @p f(cell, dofs, node) for each locally owned node (a support
+    /// point of the scalar element whose component-0 DoF is locally owned)
+    /// once, on the first locally owned cell that has it, in the order of
+    /// the cells; dofs are the cell's DoFs (a node's DoFs are owned
+    /// together).
+    template <int dim, typename Function>
+    void
+    for_each_owned_node(const DoFHandler<dim> &dof_handler,
+                        const IndexSet        &locally_owned,
+                        const Function        &f)
+    {
+      const auto        &fe      = dof_handler.get_fe();
+      const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+      std::vector<bool>  seen(locally_owned.n_elements());
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int node = 0; node < n_nodes; ++node)
+              {
+                const auto dof0 = dofs[fe.component_to_system_index(0, node)];
+                if (!locally_owned.is_element(dof0))
+                  continue;
+                const auto k0 = locally_owned.index_within_set(dof0);
+                if (seen[k0])
+                  continue;
+                seen[k0] = true;
+                f(cell, dofs, node);
+              }
+          }
+    }
+  } // namespace
+
 
 
   template <int dim>
@@ -146,36 +182,21 @@ namespace dyncontact
   void
   SemiDiscreteSystem<dim>::index_owned_nodes(const unsigned int n_bodies)
   {
-    // one pass over the locally owned cells: for each locally owned DoF its
-    // slot body * dim + component (the momentum's sums)
-    constexpr unsigned char unset = std::numeric_limits<unsigned char>::max();
-    owned_dof_slots.assign(locally_owned.n_elements(), unset);
+    // for each locally owned DoF its slot body * dim + component (the
+    // momentum's sums)
+    owned_dof_slots.assign(locally_owned.n_elements(),
+                           std::numeric_limits<unsigned char>::max());
     n_owned_body_dofs.assign(n_bodies, 0);
-    {
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(dofs);
-            const types::material_id body = cell->material_id();
-            for (unsigned int node = 0; node < scalar_fe.n_dofs_per_cell();
-                 ++node)
-              {
-                const auto dof0 = dofs[fe.component_to_system_index(0, node)];
-                if (!locally_owned.is_element(dof0))
-                  continue;
-                // (a node's DoFs are owned together)
-                const auto k0 = locally_owned.index_within_set(dof0);
-                if (owned_dof_slots[k0] != unset)
-                  continue;
-                for (unsigned int c = 0; c < dim; ++c)
-                  owned_dof_slots[locally_owned.index_within_set(
-                    dofs[fe.component_to_system_index(c, node)])] =
-                    body * dim + c;
-                n_owned_body_dofs[body] += dim;
-              }
-          }
-    }
+    for_each_owned_node(
+      dof_handler,
+      locally_owned,
+      [&](const auto &cell, const auto &dofs, const unsigned int node) {
+        const types::material_id body = cell->material_id();
+        for (unsigned int c = 0; c < dim; ++c)
+          owned_dof_slots[locally_owned.index_within_set(
+            dofs[fe.component_to_system_index(c, node)])] = body * dim + c;
+        n_owned_body_dofs[body] += dim;
+      });
 
     // AMG's near-null space: the rigid translations, one per component,
     // as DoFTools::extract_constant_modes() gives them (whether each
@@ -201,31 +222,26 @@ namespace dyncontact
     DoFTools::extract_locally_relevant_dofs(numbered->dof_handler,
                                             numbered->locally_relevant);
     // each locally owned node once, in the order of the cells
-    std::vector<bool>                    seen(locally_owned.n_elements());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> node_dofs(scalar_fe.n_dofs_per_cell());
-    auto scalar_cell = numbered->dof_handler.begin_active();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_locally_owned())
+    unsigned int read_on = numbers::invalid_unsigned_int;
+    for_each_owned_node(
+      dof_handler,
+      locally_owned,
+      [&](const auto &cell, const auto &dofs, const unsigned int node) {
+        // (the same cell in the scalar DoF handler, read once per cell)
+        if (cell->active_cell_index() != read_on)
           {
-            cell->get_dof_indices(dofs);
-            scalar_cell->get_dof_indices(node_dofs);
-            for (unsigned int node = 0; node < node_dofs.size(); ++node)
-              {
-                const auto dof0 = dofs[fe.component_to_system_index(0, node)];
-                if (!locally_owned.is_element(dof0))
-                  continue;
-                const auto k0 = locally_owned.index_within_set(dof0);
-                if (seen[k0])
-                  continue;
-                seen[k0] = true;
-                numbered->owned_system0_to_scalar.emplace_back(dof0,
-                                                               node_dofs[node]);
-              }
+            typename DoFHandler<dim>::active_cell_iterator(
+              &cell->get_triangulation(),
+              cell->level(),
+              cell->index(),
+              &numbered->dof_handler)
+              ->get_dof_indices(node_dofs);
+            read_on = cell->active_cell_index();
           }
-        ++scalar_cell;
-      }
+        numbered->owned_system0_to_scalar.emplace_back(
+          dofs[fe.component_to_system_index(0, node)], node_dofs[node]);
+      });
     scalar = std::move(numbered);
     return *scalar;
   }
@@ -252,20 +268,19 @@ namespace dyncontact
     bool expanded = expand(numbered.locally_owned) == locally_owned &&
                     expand(numbered.locally_relevant) == locally_relevant;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> scalar_dofs(
-      scalar_fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> node_dofs(scalar_fe.n_dofs_per_cell());
     auto scalar_cell = numbered.dof_handler.begin_active();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (expanded && !cell->is_artificial())
           {
             cell->get_dof_indices(dofs);
-            scalar_cell->get_dof_indices(scalar_dofs);
+            scalar_cell->get_dof_indices(node_dofs);
             for (unsigned int i = 0; i < dofs.size(); ++i)
               expanded =
                 expanded &&
                 (dofs[i] ==
-                 dim * scalar_dofs[fe.system_to_component_index(i).second] +
+                 dim * node_dofs[fe.system_to_component_index(i).second] +
                    fe.system_to_component_index(i).first);
           }
         ++scalar_cell;

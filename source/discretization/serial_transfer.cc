@@ -9,9 +9,10 @@ namespace dyncontact
 {
   namespace
   {
-    /// A Trilinos vector on one rank read as the array of its DoFs.
-    ArrayView<const double>
-    dof_values(const TrilinosWrappers::MPI::Vector &vector)
+    /// A Trilinos vector on one rank as the array of its DoFs.
+    template <typename TrilinosVector>
+    auto
+    dof_values(TrilinosVector &vector)
     {
       AssertThrow(vector.locally_owned_size() == vector.size(),
                   ExcMessage("the serial transfer needs all DoFs on one rank"));
@@ -118,12 +119,7 @@ namespace dyncontact
     const unsigned int             n = dofs.get_fe().n_dofs_per_cell();
     std::vector<ArrayView<double>> arrays;
     for (auto *vector : out)
-      {
-        AssertThrow(vector->locally_owned_size() == vector->size(),
-                    ExcMessage(
-                      "the serial transfer needs all DoFs on one rank"));
-        arrays.push_back(make_array_view(vector->begin(), vector->end()));
-      }
+      arrays.push_back(dof_values(*vector));
     Vector<double>                       local(n);
     std::vector<types::global_dof_index> dof_indices(n);
     // cell by cell in deal.II's order, so that a DoF shared by cells gets

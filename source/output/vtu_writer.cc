@@ -213,19 +213,12 @@ namespace dyncontact
         data_out.add_data_vector(system.get_dof_handler(),
                                  u_ghosted,
                                  von_mises);
-        data_out.add_data_vector(system.scalar_dofs().dof_handler,
-                                 contact.pressure,
-                                 "contact_pressure");
-        data_out.add_data_vector(system.scalar_dofs().dof_handler,
-                                 contact.active,
-                                 "active_set");
-        data_out.add_data_vector(system.scalar_dofs().dof_handler,
-                                 contact.critical,
-                                 "critical_set");
+        const DoFHandler<dim> &scalar = system.scalar_dofs().dof_handler;
+        data_out.add_data_vector(scalar, contact.pressure, "contact_pressure");
+        data_out.add_data_vector(scalar, contact.active, "active_set");
+        data_out.add_data_vector(scalar, contact.critical, "critical_set");
         if (!scene.contact_pairs().empty())
-          data_out.add_data_vector(system.scalar_dofs().dof_handler,
-                                   contact.gap,
-                                   "gap");
+          data_out.add_data_vector(scalar, contact.gap, "gap");
         data_out.add_data_vector(subdomain, "subdomain");
         data_out.add_data_vector(level, "refinement_level");
       }
