@@ -103,11 +103,6 @@ namespace dyncontact
                                                     &tractions,
               const std::vector<types::boundary_id> &contact_ids)
       {
-        if (lumped_mass)
-          mass_diagonal = 0.;
-        else
-          mass = 0.;
-        load             = 0.;
         boundary_weights = 0.;
         fe_values.reinit(cell);
         mass_values.reinit(cell);
@@ -115,7 +110,19 @@ namespace dyncontact
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           if (!(fe_values.JxW(q) > 0.))
             positive = false;
-        volume_terms(rho, body_force);
+        // a translation of the cell before has its values and JxW
+        // (FEValues keeps them), hence with the same density its scalar
+        // mass and load, and the same element mass matrix
+        const bool same_volume_terms =
+          have_volume_terms && rho == volume_rho &&
+          fe_values.get_cell_similarity() == CellSimilarity::translation &&
+          mass_values.get_cell_similarity() == CellSimilarity::translation;
+        if (!same_volume_terms)
+          volume_terms(rho);
+        have_volume_terms = true;
+        volume_rho        = rho;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          load(i) = scalar_load[node[i]] * body_force[component[i]];
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             face_terms(cell, f, tractions, contact_ids);
@@ -129,18 +136,22 @@ namespace dyncontact
       Vector<double>     boundary_weights;
 
     private:
+      /// int phi_k (scalar_load) and the element mass matrix (lumped:
+      /// its diagonal) of the present cell with density @p rho
       void
-      volume_terms(const double rho, const Tensor<1, dim> &body_force)
+      volume_terms(const double rho)
       {
         std::fill(scalar_load.begin(), scalar_load.end(), 0.);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           for (unsigned int k = 0; k < n_nodes; ++k)
             scalar_load[k] += fe_values.shape_value(k, q) * fe_values.JxW(q);
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          load(i) = scalar_load[node[i]] * body_force[component[i]];
 
         // (lumped: the element matrix is diagonal, only its diagonal is
         // computed)
+        if (lumped_mass)
+          mass_diagonal = 0.;
+        else
+          mass = 0.;
         std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
         if (lumped_mass)
           {
@@ -213,6 +224,9 @@ namespace dyncontact
       /// int phi_k
       std::vector<double> scalar_mass;
       std::vector<double> scalar_load;
+      /// whether volume_terms() ran, and the density it had
+      bool   have_volume_terms = false;
+      double volume_rho        = 0.;
     };
 
 
@@ -592,22 +606,27 @@ namespace dyncontact
           const auto [mu, lambda] =
             combined_moduli(materials.at(cell->material_id()), a, b);
           fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
-          // H^cc_kk = int (d_c phi_k)^2
-          std::fill(H.begin(), H.end(), 0.);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          // H^cc_kk = int (d_c phi_k)^2; a translation of the previous cell
+          // has its gradients and JxW (FEValues keeps them), hence its H
+          if (fe_values.get_cell_similarity() != CellSimilarity::translation)
             {
-              const double JxW = fe_values.JxW(q);
-              for (unsigned int k = 0; k < n_nodes; ++k)
+              std::fill(H.begin(), H.end(), 0.);
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
                 {
-                  const Tensor<1, dim> &gradient = fe_values.shape_grad(k, q);
-                  for (unsigned int c = 0; c < dim; ++c)
-                    H[c * n_nodes + k] += gradient[c] * JxW * gradient[c];
+                  const double JxW = fe_values.JxW(q);
+                  for (unsigned int k = 0; k < n_nodes; ++k)
+                    {
+                      const Tensor<1, dim> &gradient =
+                        fe_values.shape_grad(k, q);
+                      for (unsigned int c = 0; c < dim; ++c)
+                        H[c * n_nodes + k] += gradient[c] * JxW * gradient[c];
+                    }
                 }
+              std::fill(laplace.begin(), laplace.end(), 0.);
+              for (unsigned int c = 0; c < dim; ++c)
+                for (unsigned int k = 0; k < n_nodes; ++k)
+                  laplace[k] += H[c * n_nodes + k];
             }
-          std::fill(laplace.begin(), laplace.end(), 0.);
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int k = 0; k < n_nodes; ++k)
-              laplace[k] += H[c * n_nodes + k];
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             {
               const double H_cc = H[component[i] * n_nodes + node[i]];
