@@ -26,11 +26,11 @@ namespace dyncontact
 {
   namespace
   {
-    /// Calls @p f(cell, dofs, node) for each locally owned node (a support
-    /// point of the scalar element whose component-0 DoF is locally owned)
-    /// once, on the first locally owned cell that has it, in the order of
-    /// the cells; dofs are the cell's DoFs (a node's DoFs are owned
-    /// together).
+    /// Calls @p f(cell, node, node_dofs) for each locally owned node (a
+    /// support point of the scalar element whose component-0 DoF is
+    /// locally owned) once, on the first locally owned cell that has it, in
+    /// the order of the cells; node_dofs are the node's DoF of each
+    /// component (a node's DoFs are owned together).
     template <int dim, typename Function>
     void
     for_each_owned_node(const DoFHandler<dim> &dof_handler,
@@ -39,22 +39,31 @@ namespace dyncontact
     {
       const auto        &fe      = dof_handler.get_fe();
       const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
-      std::vector<bool>  seen(locally_owned.n_elements());
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      // the cell-local index of each node's DoF of each component
+      // (FiniteElement::component_to_system_index() searches its table)
+      std::vector<std::array<unsigned int, dim>> system_index(n_nodes);
+      for (unsigned int node = 0; node < n_nodes; ++node)
+        for (unsigned int c = 0; c < dim; ++c)
+          system_index[node][c] = fe.component_to_system_index(c, node);
+      std::vector<bool>                        seen(locally_owned.n_elements());
+      std::vector<types::global_dof_index>     dofs(fe.n_dofs_per_cell());
+      std::array<types::global_dof_index, dim> node_dofs;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             cell->get_dof_indices(dofs);
             for (unsigned int node = 0; node < n_nodes; ++node)
               {
-                const auto dof0 = dofs[fe.component_to_system_index(0, node)];
+                const auto dof0 = dofs[system_index[node][0]];
                 if (!locally_owned.is_element(dof0))
                   continue;
                 const auto k0 = locally_owned.index_within_set(dof0);
                 if (seen[k0])
                   continue;
                 seen[k0] = true;
-                f(cell, dofs, node);
+                for (unsigned int c = 0; c < dim; ++c)
+                  node_dofs[c] = dofs[system_index[node][c]];
+                f(cell, node, node_dofs);
               }
           }
     }
@@ -190,11 +199,11 @@ namespace dyncontact
     for_each_owned_node(
       dof_handler,
       locally_owned,
-      [&](const auto &cell, const auto &dofs, const unsigned int node) {
+      [&](const auto &cell, const unsigned int, const auto &node_dofs) {
         const types::material_id body = cell->material_id();
         for (unsigned int c = 0; c < dim; ++c)
-          owned_dof_slots[locally_owned.index_within_set(
-            dofs[fe.component_to_system_index(c, node)])] = body * dim + c;
+          owned_dof_slots[locally_owned.index_within_set(node_dofs[c])] =
+            body * dim + c;
         n_owned_body_dofs[body] += dim;
       });
 
@@ -222,12 +231,13 @@ namespace dyncontact
     DoFTools::extract_locally_relevant_dofs(numbered->dof_handler,
                                             numbered->locally_relevant);
     // each locally owned node once, in the order of the cells
-    std::vector<types::global_dof_index> node_dofs(scalar_fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> scalar_node_dofs(
+      scalar_fe.n_dofs_per_cell());
     unsigned int read_on = numbers::invalid_unsigned_int;
     for_each_owned_node(
       dof_handler,
       locally_owned,
-      [&](const auto &cell, const auto &dofs, const unsigned int node) {
+      [&](const auto &cell, const unsigned int node, const auto &node_dofs) {
         // (the same cell in the scalar DoF handler, read once per cell)
         if (cell->active_cell_index() != read_on)
           {
@@ -236,11 +246,11 @@ namespace dyncontact
               cell->level(),
               cell->index(),
               &numbered->dof_handler)
-              ->get_dof_indices(node_dofs);
+              ->get_dof_indices(scalar_node_dofs);
             read_on = cell->active_cell_index();
           }
-        numbered->owned_system0_to_scalar.emplace_back(
-          dofs[fe.component_to_system_index(0, node)], node_dofs[node]);
+        numbered->owned_system0_to_scalar.emplace_back(node_dofs[0],
+                                                       scalar_node_dofs[node]);
       });
     scalar = std::move(numbered);
     return *scalar;
