@@ -2,13 +2,14 @@
 // triangulation (Mesh/Triangulation = serial) against deal.II 9.4's own
 // SolutionTransfer, which the program used before: on meshes with hanging
 // nodes, cells refined, cells coarsened and cells kept in one adaptation,
-// for 2D p = 1, 2, 3 and 3D p = 1, 2, three adaptations in a row (the
+// for p = 1, 2, 3 in 2D and 3D, three adaptations in a row (the
 // second adds a finest level, the third removes it), two vectors
 // transferred at once:
 // - the values are equal bit for bit to those of deal.II's transfer of the
 //   same Trilinos vectors (the same reads, the same restriction and
-//   prolongation matrices, and a DoF shared by cells takes the value of the
-//   same cell); the second vector is random and satisfies no hanging-node
+//   prolongation matrices, the latter applied with their nonzero entries
+//   only, and a DoF shared by cells takes the value of the same cell); the
+//   second vector is random and satisfies no hanging-node
 //   constraint, so that the cells sharing a DoF give it different values
 //   and the order of the writes shows;
 // - the transfer of the interpolant of a polynomial of degree p (in the
@@ -194,6 +195,6 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   for (const unsigned int p : {1, 2, 3})
     run<2>(p);
-  for (const unsigned int p : {1, 2})
+  for (const unsigned int p : {1, 2, 3})
     run<3>(p);
 }
