@@ -276,6 +276,13 @@ namespace dyncontact
     {
       return constraints;
     }
+    /// Whether setup() made a sparsity pattern (for an assembled S or a
+    /// consistent M).
+    bool
+    has_sparsity_pattern() const
+    {
+      return graph != nullptr;
+    }
     /// Whether the scene has a viscous body (a viscous form B).
     bool
     is_viscous() const

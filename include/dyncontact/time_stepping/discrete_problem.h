@@ -186,6 +186,16 @@ namespace dyncontact
     void
     check_inertia();
 
+    /// Whether any matrix is assembled on the current mesh (a sparsity
+    /// pattern of the system's, or the multigrid's linear level): only
+    /// then do the set-ups free enough memory in small blocks to be worth
+    /// release_freed_memory().
+    bool
+    matrices_assembled() const
+    {
+      return system->has_sparsity_pattern() || coarse_system;
+    }
+
     const MPI_Comm            comm;
     const ConditionalOStream &pcout;
     const Scheme             &scheme;
