@@ -106,7 +106,10 @@ namespace dyncontact
       MatrixFree<dim, double>::AdditionalData::none;
     additional_data.mapping_update_flags = update_gradients | update_JxW_values;
     // nothing reads the DoF values without the hanging-node constraints
-    // (FEEvaluation::read_dof_values_plain): 10-15 % of the reinit
+    // (FEEvaluation::read_dof_values_plain), which deal.II would store for
+    // every cell with hanging nodes. (deal.II 9.4 needs them with face
+    // integrals: DoFInfo::compute_tight_partitioners reads them when
+    // face update flags are set.)
     additional_data.store_plain_indices = false;
     // no constraints of ours (hanging nodes: see the class documentation)
     AffineConstraints<double> no_constraints;

@@ -18,6 +18,7 @@
 #include <Epetra_Vector.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <limits>
 #include <sstream>
