@@ -281,7 +281,7 @@ namespace dyncontact
                     std::array<types::global_dof_index, dim> node_dofs;
                     for (unsigned int d = 0; d < dim; ++d)
                       node_dofs[d] =
-                        dofs[fe.component_to_system_index(d, node)];
+                        dofs[system.get_node_system_indices()[node][d]];
                     if (!locally_owned.is_element(node_dofs[0]) ||
                         seen.count(node_dofs[0]))
                       continue;

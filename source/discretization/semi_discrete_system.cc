@@ -31,23 +31,21 @@ namespace dyncontact
     /// support point of the scalar element whose component-0 DoF is
     /// locally owned) once, on the first locally owned cell that has it, in
     /// the order of the cells; node_dofs are the node's DoF of each
-    /// component (a node's DoFs are owned together).
+    /// component (a node's DoFs are owned together). @p system_index is
+    /// SemiDiscreteSystem::get_node_system_indices().
     template <int dim, typename Function>
     void
-    for_each_owned_node(const DoFHandler<dim> &dof_handler,
-                        const IndexSet        &locally_owned,
-                        const Function        &f)
+    for_each_owned_node(
+      const DoFHandler<dim> &dof_handler,
+      const IndexSet        &locally_owned,
+      const std::vector<std::array<unsigned int, std::size_t(dim)>>
+                     &system_index,
+      const Function &f)
     {
-      const auto        &fe      = dof_handler.get_fe();
-      const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
-      // the cell-local index of each node's DoF of each component
-      // (FiniteElement::component_to_system_index() searches its table)
-      std::vector<std::array<unsigned int, dim>> system_index(n_nodes);
-      for (unsigned int node = 0; node < n_nodes; ++node)
-        for (unsigned int c = 0; c < dim; ++c)
-          system_index[node][c] = fe.component_to_system_index(c, node);
-      std::vector<bool>                        seen(locally_owned.n_elements());
-      std::vector<types::global_dof_index>     dofs(fe.n_dofs_per_cell());
+      const unsigned int                   n_nodes = system_index.size();
+      std::vector<bool>                    seen(locally_owned.n_elements());
+      std::vector<types::global_dof_index> dofs(
+        dof_handler.get_fe().n_dofs_per_cell());
       std::array<types::global_dof_index, dim> node_dofs;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -81,7 +79,12 @@ namespace dyncontact
     , comm(comm)
     , fe(FE_Q<dim>(parameters.degree), dim)
     , scalar_fe(parameters.degree)
-  {}
+    , node_system_indices(scalar_fe.n_dofs_per_cell())
+  {
+    for (unsigned int node = 0; node < node_system_indices.size(); ++node)
+      for (unsigned int c = 0; c < dim; ++c)
+        node_system_indices[node][c] = fe.component_to_system_index(c, node);
+  }
 
 
 
@@ -200,6 +203,7 @@ namespace dyncontact
     for_each_owned_node(
       dof_handler,
       locally_owned,
+      node_system_indices,
       [&](const auto &cell, const unsigned int, const auto &node_dofs) {
         const types::material_id body = cell->material_id();
         for (unsigned int c = 0; c < dim; ++c)
@@ -238,6 +242,7 @@ namespace dyncontact
     for_each_owned_node(
       dof_handler,
       locally_owned,
+      node_system_indices,
       [&](const auto &cell, const unsigned int node, const auto &node_dofs) {
         // (the same cell in the scalar DoF handler, read once per cell)
         if (cell->active_cell_index() != read_on)
@@ -430,7 +435,7 @@ namespace dyncontact
                 scene.initial_velocity(x, cell->material_id());
               for (unsigned int d = 0; d < dim; ++d)
                 {
-                  const auto dof = dofs[fe.component_to_system_index(d, node)];
+                  const auto dof = dofs[node_system_indices[node][d]];
                   if (locally_owned.is_element(dof))
                     {
                       u(dof)    = u0[d];

@@ -81,20 +81,13 @@ namespace dyncontact
         const unsigned int max_level = this->get_mesh_adaptor().get_max_level();
         std::vector<types::global_dof_index> dofs(
           system.get_fe().n_dofs_per_cell());
-        // each node's component-0 DoF in the cell
-        // (FiniteElement::component_to_system_index() searches its table)
-        std::vector<unsigned int> dof0_of_node(
-          system.get_scalar_fe().n_dofs_per_cell());
-        for (unsigned int node = 0; node < dof0_of_node.size(); ++node)
-          dof0_of_node[node] =
-            system.get_fe().component_to_system_index(0, node);
         for (const auto &cell :
              system.get_dof_handler().active_cell_iterators())
           if (cell->is_locally_owned())
             {
               cell->get_dof_indices(dofs);
-              for (const unsigned int dof0 : dof0_of_node)
-                if (zone(dofs[dof0]) > 0.)
+              for (const auto &node : system.get_node_system_indices())
+                if (zone(dofs[node[0]]) > 0.)
                   {
                     cell->clear_coarsen_flag();
                     if (cell->level() < int(max_level))

@@ -16,6 +16,7 @@
 #include <dyncontact/discretization/serial_transfer.h>
 #include <dyncontact/scenes/interface.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -235,6 +236,15 @@ namespace dyncontact
     {
       return scalar_fe;
     }
+    /// For each node (support point of the scalar element) the index
+    /// within the vector element of its shape function of each component:
+    /// get_fe().component_to_system_index(c, node), which searches the
+    /// element's table, looked up once.
+    const std::vector<std::array<unsigned int, dim>> &
+    get_node_system_indices() const
+    {
+      return node_system_indices;
+    }
     const DoFHandler<dim> &
     get_dof_handler() const
     {
@@ -368,6 +378,8 @@ namespace dyncontact
     FESystem<dim>   fe;
     DoFHandler<dim> dof_handler;
     FE_Q<dim>       scalar_fe;
+    /// (see get_node_system_indices())
+    std::vector<std::array<unsigned int, dim>> node_system_indices;
     /// (null until scalar_dofs() numbers them on the current mesh)
     mutable std::unique_ptr<ScalarDoFs> scalar;
 
