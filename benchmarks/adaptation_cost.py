@@ -22,9 +22,8 @@ restored'), split into its parts:
   S           'adaptation: step matrix and preconditioner'
   restore     'adaptation: constraints restored'
   energy      'adaptation: energy transfer' (the energy before and after
-              the transfer: A u on the new mesh, which the next step then
-              reads from its cache, so the product the first step on a new
-              mesh would otherwise make)
+              the transfer; the one after computes A u on the new mesh, the
+              product that the first step there would otherwise make)
 each but the first over n, and their sum in steps of the same run.
 --tau-ratio R sets tau = R h_min / (p c) (default 1/2; the node spacing
 is h_min / p) and the runs to at least 60 steps, leaves out the Kelly
