@@ -43,14 +43,34 @@ number of steps and adaptations, and the front crosses as many cells, on
 a mesh of about F^dim times the DoFs (F = 3 and 10 in 2D, 2 and 4 in 3D
 for 1e5 and 1e6); it leaves out the Kelly runs and the bar below.
 --dim D runs the cases of dimension D only.
+--floor runs each case once (whatever --repeat says) under 'perf
+record' (the Debian package linux-perf; perf must be allowed to record
+the process) and prints, instead of the sections, where the samples of
+an adaptation that changes the mesh go, in steps of the same run (the
+samples of the steps over their number): the set-up passes of deal.II
+that every such adaptation makes, each a pass over the mesh that the
+program calls once ('MatrixFree' MatrixFree::reinit, 'DoFs'
+DoFHandler::distribute_dofs, 'refinement'
+Triangulation::execute_coarsening_and_refinement, 'flags' the smoothing
+of the flags before the transfer), the energy's product with A, the
+indicators (per call, over all calls) and the rest, the program's own
+work; 'floor' is the sum of deal.II's passes and the indicators, what an
+adaptation costs before any work of the program's, 'floor + energy'
+with the energy's product.
+--repeat N runs each case N times (default 1) and prints the median of
+each column over the runs and, beside the median of 'in steps', its
+smallest and largest value: at 10^4 DoFs only 2 to 11 adaptations change
+the mesh, and single runs of one case differ by up to 0.9 step.
 One rank, Release build.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/adaptation_cost.py [build/dyncontact]
                                   [--tau-ratio R] [--only LABELS]
-                                  [--scale F] [--dim D]"""
+                                  [--scale F] [--dim D] [--repeat N]
+                                  [--floor]"""
 import csv
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -61,11 +81,22 @@ tau_ratio = take_option(arguments, "--tau-ratio", float)
 only = take_option(arguments, "--only")
 scale = take_option(arguments, "--scale", float)
 only_dim = take_option(arguments, "--dim", int)
+repeat = take_option(arguments, "--repeat", int, 1)
+floor = "--floor" in arguments
+if floor:
+    arguments.remove("--floor")
+    if not shutil.which("perf"):
+        sys.exit("--floor needs perf (Debian package linux-perf)")
+if repeat < 1:
+    sys.exit("--repeat must be at least 1; got %d" % repeat)
 if only_dim is not None and only_dim not in (2, 3):
     sys.exit("--dim must be 2 or 3; got %d" % only_dim)
 if scale is not None and not scale > 0:
     sys.exit("--scale must be > 0; got %g" % scale)
 executable = arguments[0] if arguments else "build/dyncontact"
+if not (os.path.isfile(executable) and os.access(executable, os.X_OK)):
+    sys.exit("no executable program at '%s' (build it first: "
+             "bash tools/setup.sh)" % executable)
 folder = "results-adaptation-cost"
 os.makedirs(folder, exist_ok=True)
 
@@ -111,6 +142,46 @@ parts = [("indicators", ["adaptation: indicators and flags"]),
          ("energy", ["adaptation: energy transfer"])]
 
 
+def median(values):
+    values = sorted(values)
+    n = len(values)
+    return 0.5 * (values[(n - 1) // 2] + values[n // 2])
+
+
+# (label, pattern of a frame): the first that matches a sample of
+# DiscreteProblem::adapt_mesh counts it
+floor_parts = [
+    ("indicators", re.compile(r"MeshAdaptor<\d>::mark_cells")),
+    ("MatrixFree", re.compile(r"dealii::MatrixFree<.*>::reinit")),
+    ("DoFs", re.compile(r"dealii::DoFHandler<\d, \d>::distribute_dofs")),
+    ("refinement", re.compile(
+        r"dealii::Triangulation<\d, \d>::execute_coarsening_and_refinement")),
+    ("flags", re.compile(
+        r"dealii::Triangulation<\d, \d>::prepare_coarsening_and_refinement")),
+    ("energy", re.compile(r"SemiDiscreteSystem<\d>::total_energy")),
+    ("own", re.compile(r""))]
+
+
+def perf_samples(data):
+    """The samples of 'perf record' in data: those of the steps
+    (DiscreteProblem::take_step) and those of each of floor_parts within
+    DiscreteProblem::adapt_mesh."""
+    script = subprocess.run(["perf", "script", "-i", data, "--no-inline"],
+                            check=True, capture_output=True, text=True).stdout
+    counts = dict((part, 0) for part, _ in floor_parts)
+    counts["steps"] = 0
+    for sample in script.split("\n\n"):
+        if re.search(r"DiscreteProblem<\d>::take_step", sample):
+            counts["steps"] += 1
+        elif re.search(r"DiscreteProblem<\d>::adapt_mesh", sample):
+            for part, pattern in floor_parts:
+                if pattern.search(sample):
+                    counts[part] += 1
+                    break
+    os.remove(data)
+    return counts
+
+
 def run(name, dim, degree, cells, end, criterion, tau=None, levels=2,
         step_matrix="assembled", preconditioner="automatic",
         triangulation="distributed"):
@@ -120,6 +191,7 @@ def run(name, dim, degree, cells, end, criterion, tau=None, levels=2,
         if tau_ratio:
             end = max(end, 60 * tau)
     prm = os.path.join(folder, name + ".prm")
+    sections = {}
     with open(prm, "w") as f:
         f.write("""set Dimension = %d
 set Polynomial degree = %d
@@ -168,8 +240,21 @@ end
   set Criteria = %s
 end
 """ % (levels, levels, criterion))
-    subprocess.run([executable, prm], check=True, stdout=subprocess.DEVNULL)
-    sections = {}
+    command = [executable, prm]
+    if floor:
+        data = os.path.join(folder, name + ".perf")
+        # (fewer samples per second on larger meshes: about as many in all)
+        frequency = max(200, int(10000 / (scale or 1) ** dim))
+        command = ["perf", "record", "-q", "-o", data, "-F", str(frequency),
+                   "--call-graph", "dwarf,16384"] + command
+    status = subprocess.run(command, stdout=subprocess.DEVNULL).returncode
+    if status != 0:
+        sys.exit("'%s' failed with exit code %d%s" % (
+            " ".join(command), status,
+            " (is perf allowed to record? see the kernel setting "
+            "perf_event_paranoid)" if floor else ""))
+    if floor:
+        sections["samples"] = perf_samples(data)
     for line in open(os.path.join(folder, name, "summary.txt")):
         m = re.match(r"^  (\S.*?)\s+([0-9.e+-]+) s\s+(\d+) calls", line)
         if m:
@@ -184,10 +269,16 @@ end
     return sections, dofs, float(errors[-1]) if errors else None
 
 
-print("| dim | p | criterion | mean DoFs | adaptations changing the mesh "
-      "| ms per step | indicators | refine | dofs | assembly | S | restore "
-      "| energy | adaptation (ms) | in steps |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+if floor:
+    print("| dim | p | criterion | mean DoFs | adaptations changing the mesh "
+          "| samples per step | %s | floor | floor + energy |"
+          % " | ".join(part for part, _ in floor_parts))
+    print("|---|---|---|---|---|---|%s---|---|" % ("---|" * len(floor_parts)))
+else:
+    print("| dim | p | criterion | mean DoFs | adaptations changing the "
+          "mesh | ms per step | indicators | refine | dofs | assembly | S "
+          "| restore | energy | adaptation (ms) | in steps |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for dim, degree, cells, end in cases:
     for label, criterion, step_matrix, preconditioner, triangulation in \
             criteria:
@@ -198,27 +289,54 @@ for dim, degree, cells, end in cases:
         name = "%dd_q%d_%s%s%s" % (dim, degree, label.replace(" ", "_"),
                                    "_tau%g" % tau_ratio if tau_ratio else "",
                                    "_scale%g" % scale if scale else "")
-        sections, dofs, _ = run(name, dim, degree, cells, end, criterion,
-                                step_matrix=step_matrix,
-                                preconditioner=preconditioner,
-                                triangulation=triangulation)
-        time, calls = sections["time step"]
-        step = time / calls
-        attempts = sections["adaptation: indicators and flags"][1]
-        changes = sections["adaptation: constraints restored"][1]
-        costs = []
-        for part, names in parts:
-            costs.append(sum(sections[n][0] for n in names if n in sections)
-                         / (attempts if part == "indicators" else changes))
-        total = sum(costs)
-        print("| %d | %d | %s | %.0f | %d of %d | %.1f | %s | %.0f | %.1f |"
+        if floor:
+            sections, dofs, _ = run(name, dim, degree, cells, end,
+                                    criterion, step_matrix=step_matrix,
+                                    preconditioner=preconditioner,
+                                    triangulation=triangulation)
+            samples = sections["samples"]
+            attempts = sections["adaptation: indicators and flags"][1]
+            changes = sections["adaptation: constraints restored"][1]
+            per_step = samples["steps"] / sections["time step"][1]
+            steps = [samples[part] / per_step
+                     / (attempts if part == "indicators" else changes)
+                     for part, _ in floor_parts]
+            print("| %d | %d | %s | %.0f | %d of %d | %.0f | %s | %.2f "
+                  "| %.2f |" % (dim, degree, label, dofs, changes, attempts, per_step,
+                     " | ".join("%.2f" % x for x in steps),
+                     sum(steps[:5]), sum(steps[:6])))
+            sys.stdout.flush()
+            continue
+        runs = []  # (ms per step, ms per part, in steps) of each run
+        for _ in range(repeat):
+            sections, dofs, _ = run(name, dim, degree, cells, end,
+                                    criterion, step_matrix=step_matrix,
+                                    preconditioner=preconditioner,
+                                    triangulation=triangulation)
+            time, calls = sections["time step"]
+            step = time / calls
+            attempts = sections["adaptation: indicators and flags"][1]
+            changes = sections["adaptation: constraints restored"][1]
+            costs = []
+            for part, names in parts:
+                costs.append(sum(sections[n][0] for n in names
+                                 if n in sections)
+                             / (attempts if part == "indicators"
+                                else changes))
+            runs.append((step, costs, sum(costs) / step))
+        step = median([r[0] for r in runs])
+        costs = [median([r[1][k] for r in runs]) for k in range(len(parts))]
+        steps = sorted(r[2] for r in runs)
+        print("| %d | %d | %s | %.0f | %d of %d | %.1f | %s | %.0f | %s |"
               % (dim, degree, label, dofs, changes, attempts,
                  1e3 * step,
-                 " | ".join("%.1f" % (1e3 * c) for c in costs), 1e3 * total,
-                 total / step))
+                 " | ".join("%.1f" % (1e3 * c) for c in costs),
+                 1e3 * sum(costs),
+                 "%.1f" % median(steps) if repeat == 1 else
+                 "%.1f (%.1f–%.1f)" % (median(steps), steps[0], steps[-1])))
         sys.stdout.flush()
 
-if tau_ratio or only or scale:
+if tau_ratio or only or scale or floor:
     sys.exit(0)
 print()
 print("| bar to T = 2.5 s | error at T | mean DoFs | time loop without "
