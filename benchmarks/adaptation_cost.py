@@ -27,8 +27,9 @@ restored'), split into its parts:
 each but the first over n, and their sum in steps of the same run.
 --tau-ratio R sets tau = R h_min / (p c) (default 1/2; the node spacing
 is h_min / p) and the runs to at least 60 steps, leaves out the Kelly
-runs, 3D p = 1 unless --dim 3 asks for it (2.4e5 DoFs, 10-30 minutes),
-the 3D assembled S (Q2 with AMG, about 30 s per step) and the bar below,
+runs, 3D p = 1 unless --dim 3 asks for it (2.5e5 DoFs, 6 minutes per
+run), the 3D assembled S (Q2 with AMG about 30 s per step, Q1 with AMG
+left out with it) and the bar below,
 and adds for p >= 2 the recovery runs with 'Contact solver/Preconditioner
 = multigrid' (criterion 'recovery mg'), the preconditioner for large tau;
 without --only it runs 'recovery', 'recovery mf' and 'recovery mg'.
@@ -37,31 +38,40 @@ tau = 1/256) with each criterion against the uniform mesh of its finest
 level: the energy-norm error at T, the mean DoFs and the time loop's wall
 time (summary.txt) without the sampled error norms, also with the serial
 triangulation. --only LABELS runs the criteria of the comma-separated
-labels only (e.g. 'recovery mf,recovery mf serial').
+labels only (e.g. 'recovery mf,recovery mf serial'); with --only,
+--scale, --tau-ratio or --floor the bar is left out.
 --scale F multiplies the cells along the bar by F and divides the
 initial gap and the end time by F (tau falls with h_min): the same
 number of steps and adaptations, and the front crosses as many cells, on
 a mesh of about F^dim times the DoFs (F = 3 and 10 in 2D, 2 and 4 in 3D
 for 1e5 and 1e6); it leaves out the Kelly runs and the bar below.
 --dim D runs the cases of dimension D only.
---floor runs each case once (whatever --repeat says) under 'perf
-record' (the Debian package linux-perf; perf must be allowed to record
-the process) and prints, instead of the sections, where the samples of
-an adaptation that changes the mesh go, in steps of the same run (the
-samples of the steps over their number): the set-up passes of deal.II
-that every such adaptation makes, each a pass over the mesh that the
-program calls once ('MatrixFree' MatrixFree::reinit, 'DoFs'
-DoFHandler::distribute_dofs, 'refinement'
-Triangulation::execute_coarsening_and_refinement, 'flags' the smoothing
-of the flags before the transfer), the energy's product with A, the
-indicators (per call, over all calls) and the rest, the program's own
-work; 'floor' is the sum of deal.II's passes and the indicators, what an
-adaptation costs before any work of the program's, 'floor + energy'
-with the energy's product.
---repeat N runs each case N times (default 1) and prints the median of
-each column over the runs and, beside the median of 'in steps', its
-smallest and largest value: at 10^4 DoFs only 2 to 11 adaptations change
-the mesh, and single runs of one case differ by up to 0.9 step.
+--floor runs each case once (whatever --repeat says; not with
+--tau-ratio) under 'perf record' (the Debian package linux-perf; perf
+must be allowed to record the process) and prints, instead of the
+sections, where the samples of an adaptation that changes the mesh go,
+in steps of the same run (the samples of the steps, with the initial
+solve, over the calls of 'time step'): the indicators as the section
+'adaptation: indicators and flags' counts them (per call, over all
+calls), then deal.II's set-up passes, each a pass over the mesh
+('MatrixFree' MatrixFree::reinit, 'DoFs' DoFHandler::distribute_dofs,
+'refinement' the triangulation's execute_coarsening_and_refinement,
+'flags' its smoothing of the flags before the transfer; on the serial
+triangulation with the matrix-free S each runs once per adaptation, an
+assembled S or the multigrid numbers a second set of DoFs), the energy's
+product with A, and the rest, the program's own work (with the deal.II
+and Trilinos calls it makes itself). 'floor' is the sum of the
+indicators and deal.II's passes, what an adaptation costs before the
+program's own work, 'floor + energy' with the energy's product. Samples
+land where perf's stacks show them: a few hundred per adaptation, so
+that single runs differ by about 0.1 step.
+--repeat N runs each case N times (default 1) and prints the median over
+the runs of 'ms per step' and of each part, their sum as 'adaptation
+(ms)', and as 'in steps' the median of the runs' own ratios (which need
+not be the sum over the step) with their smallest and largest value;
+mean DoFs and the adaptations are those of the last run (the runs have
+the same meshes). At 10^4 DoFs only 2 to 11 adaptations change the mesh,
+and single runs of one case differ by up to 0.9 step.
 One rank, Release build.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/adaptation_cost.py [build/dyncontact]
@@ -88,6 +98,17 @@ if floor:
     arguments.remove("--floor")
     if not shutil.which("perf"):
         sys.exit("--floor needs perf (Debian package linux-perf)")
+    if tau_ratio is not None:
+        sys.exit("--floor does not run with --tau-ratio (runs of minutes, "
+                 "too long to record)")
+unknown_options = [a for a in arguments if a.startswith("-")]
+if unknown_options or len(arguments) > 1:
+    sys.exit("unknown options or more than one program: %s (see --help)"
+             % " ".join(unknown_options or arguments[1:]))
+if tau_ratio is not None and not tau_ratio > 0:
+    sys.exit("--tau-ratio must be > 0; got %g" % tau_ratio)
+if only is not None and not only.strip(" ,"):
+    sys.exit("--only needs at least one label")
 if repeat < 1:
     sys.exit("--repeat must be at least 1; got %d" % repeat)
 if only_dim is not None and only_dim not in (2, 3):
@@ -116,8 +137,8 @@ criteria = [("kelly", "kelly velocity", "assembled", "automatic",
             ("recovery mf serial", "recovery velocity", "matrix-free",
              "automatic", "serial")]
 if tau_ratio:
-    # (3D p = 1 at large tau: 2.4e5 DoFs, about 6 s per step assembled and
-    # more matrix-free, half an hour for the two runs: only with --dim 3)
+    # (3D p = 1 at large tau: 2.5e5 DoFs, about 5 s per step matrix-free,
+    # 6 minutes per run: only with --dim 3)
     if only_dim != 3:
         cases = [case for case in cases if case[:2] != (3, 1)]
     criteria = criteria[1:] + [("recovery mg", "recovery velocity",
@@ -131,12 +152,16 @@ if scale:
 if only_dim:
     cases = [case for case in cases if case[0] == only_dim]
 if only:
-    labels = only.split(",")
+    labels = [l.strip() for l in only.split(",") if l.strip()]
     unknown = [l for l in labels if l not in [c[0] for c in criteria]]
     if unknown:
         sys.exit("--only: no criterion labelled %s; the labels are %s"
                  % (", ".join(unknown), ", ".join(c[0] for c in criteria)))
     criteria = [c for c in criteria if c[0] in labels]
+    if tau_ratio and only_dim == 3 and all(c[2] == "assembled"
+                                           for c in criteria):
+        sys.exit("--tau-ratio in 3D runs no assembled S (Q2 with AMG: about "
+                 "30 s per step); choose a matrix-free criterion")
 parts = [("indicators", ["adaptation: indicators and flags"]),
          ("refine", ["adaptation: refinement and transfer"]),
          ("dofs", ["adaptation: DoFs and sparsity"]),
@@ -153,29 +178,36 @@ def median(values):
 
 
 # (label, pattern of a frame): the first that matches a sample of
-# DiscreteProblem::adapt_mesh counts it
+# DiscreteProblem::adapt_mesh counts it ('indicators' as the section
+# 'adaptation: indicators and flags' does at every call: the criterion and
+# the marking, and the scan for flags, adapt_mesh's first lambda)
+triangulation_class = (r"dealii::(parallel::distributed::)?"
+                       r"Triangulation<\d, \d>")
 floor_parts = [
-    ("indicators", re.compile(r"MeshAdaptor<\d>::mark_cells")),
+    ("indicators", re.compile(r"MeshAdaptor<\d>::mark_cells|"
+                              r"adapt_mesh\(.*\)::\{lambda\(\)#1\}")),
     ("MatrixFree", re.compile(r"dealii::MatrixFree<.*>::reinit")),
     ("DoFs", re.compile(r"dealii::DoFHandler<\d, \d>::distribute_dofs")),
     ("refinement", re.compile(
-        r"dealii::Triangulation<\d, \d>::execute_coarsening_and_refinement")),
+        triangulation_class + "::execute_coarsening_and_refinement")),
     ("flags", re.compile(
-        r"dealii::Triangulation<\d, \d>::prepare_coarsening_and_refinement")),
+        triangulation_class + "::prepare_coarsening_and_refinement")),
     ("energy", re.compile(r"SemiDiscreteSystem<\d>::total_energy")),
     ("own", re.compile(r""))]
 
 
 def perf_samples(data):
     """The samples of 'perf record' in data: those of the steps
-    (DiscreteProblem::take_step) and those of each of floor_parts within
-    DiscreteProblem::adapt_mesh."""
+    (DiscreteProblem::take_step, and the initial solve, which the section
+    'time step' counts as one of its calls) and those of each of
+    floor_parts within DiscreteProblem::adapt_mesh."""
     script = subprocess.run(["perf", "script", "-i", data, "--no-inline"],
                             check=True, capture_output=True, text=True).stdout
     counts = dict((part, 0) for part, _ in floor_parts)
     counts["steps"] = 0
     for sample in script.split("\n\n"):
-        if re.search(r"DiscreteProblem<\d>::take_step", sample):
+        if re.search(r"DiscreteProblem<\d>::take_step|"
+                     r"dyncontact::TimeIntegrator::initialize", sample):
             counts["steps"] += 1
         elif re.search(r"DiscreteProblem<\d>::adapt_mesh", sample):
             for part, pattern in floor_parts:
@@ -266,8 +298,8 @@ end
         m = re.match(r"^wall time: .* the time loop ([0-9.e+-]+) s", line)
         if m:
             sections["time loop"] = (float(m.group(1)), 1)
-    rows = list(csv.DictReader(open(os.path.join(folder, name, "statistics.tsv")),
-                               delimiter="\t"))
+    rows = list(csv.DictReader(
+        open(os.path.join(folder, name, "statistics.tsv")), delimiter="\t"))
     dofs = sum(float(r["dofs"]) for r in rows) / len(rows)
     errors = [r["error_energy_norm"] for r in rows if r["error_energy_norm"]]
     return sections, dofs, float(errors[-1]) if errors else None
@@ -289,7 +321,7 @@ for dim, degree, cells, end in cases:
         if preconditioner == "multigrid" and degree < 2:
             continue
         if tau_ratio and dim == 3 and step_matrix == "assembled":
-            continue  # Q2 with AMG: about 30 s per step at 3e5 DoFs
+            continue  # Q2 with AMG: about 30 s per step at 3e5 DoFs, and Q1
         name = "%dd_q%d_%s%s%s" % (dim, degree, label.replace(" ", "_"),
                                    "_tau%g" % tau_ratio if tau_ratio else "",
                                    "_scale%g" % scale if scale else "")
@@ -300,13 +332,20 @@ for dim, degree, cells, end in cases:
                                     triangulation=triangulation)
             samples = sections["samples"]
             attempts = sections["adaptation: indicators and flags"][1]
-            changes = sections["adaptation: constraints restored"][1]
+            changes = sections.get("adaptation: constraints restored",
+                                   (0, 0))[1]
+            if changes == 0 or samples["steps"] == 0:
+                print("| %d | %d | %s | %.0f | 0 of %d | (no adaptation "
+                      "changed the mesh, or no step was sampled) |"
+                      % (dim, degree, label, dofs, attempts))
+                continue
             per_step = samples["steps"] / sections["time step"][1]
             steps = [samples[part] / per_step
                      / (attempts if part == "indicators" else changes)
                      for part, _ in floor_parts]
             print("| %d | %d | %s | %.0f | %d of %d | %.0f | %s | %.2f "
-                  "| %.2f |" % (dim, degree, label, dofs, changes, attempts, per_step,
+                  "| %.2f |"
+                  % (dim, degree, label, dofs, changes, attempts, per_step,
                      " | ".join("%.2f" % x for x in steps),
                      sum(steps[:5]), sum(steps[:6])))
             sys.stdout.flush()
@@ -320,7 +359,10 @@ for dim, degree, cells, end in cases:
             time, calls = sections["time step"]
             step = time / calls
             attempts = sections["adaptation: indicators and flags"][1]
-            changes = sections["adaptation: constraints restored"][1]
+            changes = sections.get("adaptation: constraints restored",
+                                   (0, 0))[1]
+            if changes == 0:
+                break
             costs = []
             for part, names in parts:
                 costs.append(sum(sections[n][0] for n in names
@@ -328,6 +370,10 @@ for dim, degree, cells, end in cases:
                              / (attempts if part == "indicators"
                                 else changes))
             runs.append((step, costs, sum(costs) / step))
+        if not runs:
+            print("| %d | %d | %s | %.0f | 0 of %d | (no adaptation changed "
+                  "the mesh) |" % (dim, degree, label, dofs, attempts))
+            continue
         step = median([r[0] for r in runs])
         costs = [median([r[1][k] for r in runs]) for k in range(len(parts))]
         steps = sorted(r[2] for r in runs)

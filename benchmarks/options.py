@@ -20,9 +20,13 @@ def take_option(arguments, name, convert=str, default=None):
     if name not in arguments:
         return default
     k = arguments.index(name)
+    kind = {"int": "an integer", "float": "a number"}.get(convert.__name__,
+                                                          "a value")
+    if k + 1 >= len(arguments):
+        sys.exit("%s needs %s" % (name, kind))
     try:
         value = convert(arguments[k + 1])
-    except (IndexError, ValueError):
-        sys.exit("%s needs a value (%s)" % (name, convert.__name__))
+    except ValueError:
+        sys.exit("%s needs %s; got '%s'" % (name, kind, arguments[k + 1]))
     del arguments[k:k + 2]
     return value
