@@ -471,6 +471,12 @@ main(int argc, char **argv)
          "Density 1e300",
          "subsection Material\n  set Density = 1e300\nend\n",
          "Material/Density"},
+    // a step 2e301 times the run (End time 0.05 s): until 2026-11-28 the
+    // run took no step at all and ended with exit status zero
+    {"range",
+         "Time step 1e300",
+         "subsection Time integration\n  set Time step = 1e300\nend\n",
+         "Time integration/Time step"},
     {"range",
          "Viscous shear modulus 1e30",
          "subsection Material\n  set Viscous shear modulus = 1e30\nend\n",

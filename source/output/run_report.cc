@@ -11,6 +11,7 @@
 #include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <fstream>
@@ -91,9 +92,12 @@ namespace dyncontact
            << control.get_end_time() << " s";
     else
       {
+        // the steps SimulationControl::keep_going() takes: until t is
+        // within 1e-9 min(tau, End time) of End time
         const double tau = time_step_controller.get_timestep();
         const double n_steps =
-          std::ceil((control.get_end_time() - control.get_time()) / tau - 1e-9);
+          std::ceil((control.get_end_time() - control.get_time()) / tau -
+                    1e-9 * std::min(tau, control.get_end_time()) / tau);
         const double last = control.get_time() + n_steps * tau;
         text << scheme << ", tau = " << tau << " s, " << n_steps
              << " steps from t = " << control.get_time() << " to " << last

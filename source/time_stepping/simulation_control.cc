@@ -4,6 +4,7 @@
 #include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -55,9 +56,14 @@ namespace dyncontact
   bool
   SimulationControl::keep_going() const
   {
+    // (a time within round-off of the end time is at it; the round-off of
+    // a step longer than the whole run is that of the end time, or such a
+    // step, 1e9 times the end time, would end the run before it started)
     return is_static ?
              step < 1 :
-             time < end_time - 1e-9 * time_step_controller.get_timestep();
+             time <
+               end_time -
+                 1e-9 * std::min(time_step_controller.get_timestep(), end_time);
   }
 
 
