@@ -11,7 +11,6 @@
 #include <dyncontact/time_stepping/simulation_control.h>
 #include <dyncontact/time_stepping/time_step_controller.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <fstream>
@@ -92,12 +91,12 @@ namespace dyncontact
            << control.get_end_time() << " s";
     else
       {
-        // the steps SimulationControl::keep_going() takes: until t is
-        // within 1e-9 min(tau, End time) of End time
+        // the steps SimulationControl::keep_going() takes
         const double tau = time_step_controller.get_timestep();
         const double n_steps =
-          std::ceil((control.get_end_time() - control.get_time()) / tau -
-                    1e-9 * std::min(tau, control.get_end_time()) / tau);
+          std::ceil((control.get_end_time() - control.get_time() -
+                     control.end_time_tolerance()) /
+                    tau);
         const double last = control.get_time() + n_steps * tau;
         text << scheme << ", tau = " << tau << " s, " << n_steps
              << " steps from t = " << control.get_time() << " to " << last

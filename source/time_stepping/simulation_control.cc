@@ -56,14 +56,15 @@ namespace dyncontact
   bool
   SimulationControl::keep_going() const
   {
-    // (a time within round-off of the end time is at it; the round-off of
-    // a step longer than the whole run is that of the end time, or such a
-    // step, 1e9 times the end time, would end the run before it started)
-    return is_static ?
-             step < 1 :
-             time <
-               end_time -
-                 1e-9 * std::min(time_step_controller.get_timestep(), end_time);
+    return is_static ? step < 1 : time < end_time - end_time_tolerance();
+  }
+
+
+
+  double
+  SimulationControl::end_time_tolerance() const
+  {
+    return 1e-9 * std::min(time_step_controller.get_timestep(), end_time);
   }
 
 

@@ -85,9 +85,17 @@ namespace dyncontact
       return end_time;
     }
 
-    /// Whether another step is to be taken.
+    /// Whether another step is to be taken: not once the time is within
+    /// end_time_tolerance() of the end time.
     bool
     keep_going() const;
+
+    /// 1e-9 min(tau, End time) (s): a time within it of the end time is at
+    /// it (round-off of the steps' sum; for a step longer than the whole run
+    /// that of the end time, or a step of 1e9 times the run would end it
+    /// before it started).
+    double
+    end_time_tolerance() const;
 
     /// After an accepted step of length @p tau: t_{n+1}, counted from t_n if
     /// @p tau_changed since the step before, and the moments of this step
