@@ -338,6 +338,7 @@ namespace dyncontact
           control.get_time(),
           control.get_end_time(),
           report.tau,
+          control.steps_to_end(report.tau),
           Utilities::MPI::sum<types::global_dof_index>(
             std::count(report.active.begin(), report.active.end(), 1), comm),
           problem->get_contact().n_global_rows(),

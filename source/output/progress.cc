@@ -48,6 +48,7 @@ namespace dyncontact
                  const double       time,
                  const double       end_time,
                  const double       tau,
+                 const double       steps_to_end,
                  const unsigned int active_rows,
                  const unsigned int rows,
                  const unsigned int active_set_iterations,
@@ -63,11 +64,9 @@ namespace dyncontact
     const double wall = clock.wall_time();
     if (wall - last_line < interval)
       return;
-    last_line             = wall;
-    const double per_step = wall / std::max(1u, step - steps_at_start);
-    // the remaining steps at the present tau
-    const double remaining =
-      std::max(0., std::ceil((end_time - time) / tau - 1e-9)) * per_step;
+    last_line                    = wall;
+    const double       per_step  = wall / std::max(1u, step - steps_at_start);
+    const double       remaining = steps_to_end * per_step;
     std::ostringstream line;
     line << std::setprecision(4) << "   step " << step << ", t = " << time
          << " / " << end_time << " s (" << std::fixed << std::setprecision(0)

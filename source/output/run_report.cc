@@ -91,17 +91,13 @@ namespace dyncontact
            << control.get_end_time() << " s";
     else
       {
-        // the steps SimulationControl::keep_going() takes
-        const double tau = time_step_controller.get_timestep();
-        const double n_steps =
-          std::ceil((control.get_end_time() - control.get_time() -
-                     control.end_time_tolerance()) /
-                    tau);
-        const double last = control.get_time() + n_steps * tau;
+        const double tau     = time_step_controller.get_timestep();
+        const double n_steps = control.steps_to_end(tau);
+        const double last    = control.get_time() + n_steps * tau;
         text << scheme << ", tau = " << tau << " s, " << n_steps
              << " steps from t = " << control.get_time() << " to " << last
              << " s";
-        if (last > control.get_end_time() + 1e-9 * tau)
+        if (last > control.get_end_time() + control.end_time_tolerance())
           text << "\n   warning: End time = " << control.get_end_time()
                << " s is not reached in whole steps of Time step = " << tau
                << " s: the last step ends at t = " << last

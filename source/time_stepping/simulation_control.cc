@@ -69,6 +69,15 @@ namespace dyncontact
 
 
 
+  double
+  SimulationControl::steps_to_end(const double tau) const
+  {
+    return std::max(0.,
+                    std::ceil((end_time - time - end_time_tolerance()) / tau));
+  }
+
+
+
   StepMoments
   SimulationControl::advance(const double tau, const bool tau_changed)
   {

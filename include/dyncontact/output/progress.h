@@ -27,12 +27,15 @@ namespace dyncontact
     void
     start();
 
-    /// After a step: prints a line if the interval has passed.
+    /// After a step: prints a line if the interval has passed, with the
+    /// wall time left estimated from @p steps_to_end, the steps left at
+    /// @p tau (SimulationControl::steps_to_end()).
     void
     step(const unsigned int step,
          const double       time,
          const double       end_time,
          const double       tau,
+         const double       steps_to_end,
          const unsigned int active_rows,
          const unsigned int rows,
          const unsigned int active_set_iterations,

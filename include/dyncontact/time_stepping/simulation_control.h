@@ -97,6 +97,11 @@ namespace dyncontact
     double
     end_time_tolerance() const;
 
+    /// The steps of length @p tau that keep_going() takes from the present
+    /// time on (the last one may end after the end time).
+    double
+    steps_to_end(const double tau) const;
+
     /// After an accepted step of length @p tau: t_{n+1}, counted from t_n if
     /// @p tau_changed since the step before, and the moments of this step
     /// (output, checkpoint, last step; the next output time moves on by one
