@@ -198,7 +198,8 @@ main(int argc, char **argv)
   const Statistics own_small =
     run(prm("own-small",
             "    set Contact tags = 11; 12, 13; 14\n"
-            "    set Contact pairs = 2 : 1, 3 : 2 : 0.01\n"));
+            "    set Contact pairs = 2 : 1, 3 : 2 : 0.01\n") +
+        "subsection Contact\n  set Pair without rows = warn\nend\n");
   const Statistics own_large =
     run(prm("own-large",
             "    set Contact tags = 11; 12, 13; 14\n"

@@ -85,6 +85,21 @@ namespace
            "subsection Contact\n  set Search radius = 0.2\nend\n";
   }
 
+  /// The Gmsh scene on the two blocks, as Bodies with Contact pairs @p
+  /// pairs (the lower block clamped) and @p more entries.
+  std::string
+  gmsh_pairs(const std::string &pairs, const std::string &more = "")
+  {
+    return testing::scene_prm("gmsh",
+                              "    set Mesh file = two_blocks.msh\n"
+                              "    set Bodies = 1; 2\n"
+                              "    set Dirichlet tags = 10\n"
+                              "    set Contact tags = 11; 12\n"
+                              "    set Contact pairs = " +
+                                pairs + "\n" + more) +
+           "subsection Contact\n  set Search radius = 0.2\nend\n";
+  }
+
   /// The two blocks' mesh with line @p line (1-based) replaced by @p text.
   void
   edit_mesh(const std::string &file,
@@ -114,7 +129,14 @@ main(int argc, char **argv)
                                      "locked",
                                      "stale",
                                      "viscous",
-                                     "viscous_tight"})
+                                     "viscous_tight",
+                                     "special",
+                                     "failing",
+                                     "grown",
+                                     "subnormal",
+                                     "pieces",
+                                     "unread",
+                                     "static_viscous"})
     fs::remove_all(leftover);
 
   // the earlier run whose files must survive every failing case
@@ -140,6 +162,9 @@ main(int argc, char **argv)
     << "subsection Time integration\n  set Time step = -1\nend\n";
   std::ofstream("nested.prm") << "# includes another file\n"
                               << "include deep40.prm\n\n";
+  std::ofstream("unclosed.prm")
+    << "# a subsection that the file does not close\n"
+    << "subsection Time integration\n  set Time step = 0.0125\n";
   std::ofstream("included_entry.prm")
     << "# an entry that does not exist, in an included file\n\n"
     << "set Tme step = 1\n";
@@ -248,6 +273,12 @@ main(int argc, char **argv)
          "INCLUDE nested.prm\nset Tme step = 1\n",
          "Line " + std::to_string(std::count(base.begin(), base.end(), '\n') + 2) +
            " of 'case.prm'"},
+    // (until 2026-11-29 reported in the including file, at its end)
+    {"include",
+         "an unclosed subsection in an included file",
+         "include unclosed.prm\n",
+         "'unclosed.prm' (included at line 9 of 'case.prm'): 'subsection "
+             "Time integration' at its line 2 has no 'end'"},
     // Gmsh meshes
     {"gmsh", "triangles", gmsh("triangle.msh"), "triangles"},
     {"gmsh", "prisms", gmsh("prism.msh"), "prisms"},
@@ -325,6 +356,19 @@ main(int argc, char **argv)
          gmsh("two_blocks.msh") +
            testing::scene_entries("Gmsh", "    set Dirichlet tags = 10, 11, 12\n"),
          "lie on a Dirichlet boundary: they get no contact rows"},
+    // contact pairs without rows at t = 0 (until 2026-11-29 the bodies
+    // passed through each other with exit status zero)
+    {"contact",
+         "Gmsh: the contact tag of body 1 is its clamped face",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Contact tags of body 1 = 10\n"),
+         "has no constraint row at t = 0: all 41 of its slave nodes lie on "
+             "a Dirichlet boundary"},
+    {"contact",
+         "two bars whose search radius is below their gap",
+         scene_prm("two bars") +
+           "subsection Contact\n  set Search radius = 0.01\nend\n",
+         "lies within the search radius (0.01 m) of a master face"},
     // damaged checkpoints
     {"checkpoint",
          "truncated data file",
@@ -520,6 +564,12 @@ main(int argc, char **argv)
          "subsection Output\n  set Output interval = nan\nend\n",
          "Output/Output interval = 'nan' is refused; the values allowed are "
              "[Double 0..."},
+    // (until 2026-11-29 one step across the impact, without a word)
+    {"range",
+         "Time step 1e300 with adaptive tau",
+         "subsection Time integration\n  set Time step = 1e300\n"
+             "  set Time step control = adaptive\nend\n",
+         "Minimum time step (1.5625e+298 s) is not below End time"},
     // static problems that nothing holds (singular)
     {"static",
          "hertz with Load 0 and a gap",
@@ -546,6 +596,11 @@ main(int argc, char **argv)
          "Initial strain with Fixed far end",
          bar("    set Initial strain = 0.01\n    set Fixed far end = true\n"),
          "cannot be combined"},
+    // (until 2026-11-29 Slave side silently swapped the pair's sides)
+    {"incompatible",
+         "Contact/Slave side with Scene/Gmsh/Contact pairs",
+         gmsh_pairs("2 : 1") + "subsection Contact\n  set Slave side = 2\nend\n",
+         "Contact/Slave side = 2 would override the 'slave : master' order"},
     // messages naming the parameter
     {"message",
          "a word for an integer",
@@ -700,7 +755,257 @@ main(int argc, char **argv)
           << "\n";
   }
 
+  // special files in place of the files a run writes (a symbolic link to
+  // the user's own file, a FIFO that would block whoever opens it, a
+  // directory): refused before the run starts, with a message naming the
+  // file; nothing is written through the link, nothing hangs (timeout's
+  // status 124 would tell), and the folder holds nothing else afterwards
+  {
+    struct Special
+    {
+      std::string name;
+      std::string kind;
+      std::string expected;
+    };
+    const std::vector<Special> specials = {
+      {"statistics.tsv", "symbolic link", "' is a symbolic link"},
+      {"summary.txt", "symbolic link", "' is a symbolic link"},
+      {"solution.pvd", "symbolic link", "' is a symbolic link"},
+      {"statistics.tsv", "FIFO", "' is a FIFO"},
+      {"summary.txt", "FIFO", "' is a FIFO"},
+      {"solution.pvd", "FIFO", "' is a FIFO"},
+      {".lock", "FIFO", "' is a FIFO"},
+      {"statistics.tsv", "directory", "' is a directory"},
+      {"statistics.tsv", "hard link", "' is a file with other names"},
+      {"checkpoints", "file", "/' is not a directory"}};
+    const std::string users_text = "the user's own file\n";
+    for (const Special &special : specials)
+      {
+        fs::remove_all("special");
+        fs::create_directories("special");
+        std::ofstream("users_file.txt") << users_text;
+        const std::string path = "special/" + special.name;
+        if (special.kind == "symbolic link")
+          fs::create_symlink(fs::absolute("users_file.txt"), path);
+        else if (special.kind == "hard link")
+          fs::create_hard_link("users_file.txt", path);
+        else if (special.kind == "FIFO")
+          mkfifo(path.c_str(), 0600);
+        else if (special.kind == "file")
+          std::ofstream(path) << users_text;
+        else
+          fs::create_directories(path);
+        std::ofstream("case.prm") << base << "set Output directory = special\n";
+        const Outcome outcome = run_program("case.prm", "timeout 300 ");
+        const auto    entries =
+          std::distance(fs::directory_iterator("special"), {});
+        log() << "output: " << special.name << " is a " << special.kind
+              << ": refused before the run ("
+              << check(outcome.status != 0 && outcome.status != 124 &&
+                       without_backtrace(outcome) &&
+                       error_names(outcome, special.name + special.expected))
+              << "), the user's file unchanged and nothing else written ("
+              << check(read("users_file.txt") == users_text && entries == 1)
+              << ")\n";
+        if (outcome.status == 0 || outcome.status == 124)
+          std::cout << outcome.text << std::endl;
+      }
+  }
+
+  // a run that fails midway (the active-set limit at the impact, t = 0.1
+  // s) in the folder of a complete earlier run: its summary.txt says that
+  // it failed, after which step and why; the earlier run's summary is gone
+  {
+    fs::remove_all("failing");
+    const std::string run = base + "set Output directory = failing\n" +
+                            "subsection Time integration\n"
+                            "  set End time = 0.3\nend\n";
+    std::ofstream("failing.prm") << run;
+    const Outcome     complete = run_program("failing.prm");
+    const std::string earlier  = read("failing/summary.txt");
+    const auto earlier_steps = column_values("failing/statistics.tsv", "step");
+    std::ofstream("failing.prm")
+      << run << "subsection Contact solver\n"
+      << "  set Maximum active-set iterations = 1\nend\n";
+    const Outcome     failed  = run_program("failing.prm");
+    const std::string summary = read("failing/summary.txt");
+    const auto        steps   = column_values("failing/statistics.tsv", "step");
+    const std::string first_line = summary.substr(0, summary.find('\n'));
+    log() << "a run that fails at step " << steps.back() + 1 << " of "
+          << earlier_steps.back() << ": exit status non-zero ("
+          << check(complete.status == 0 && failed.status != 0 &&
+                   steps.back() > 0 && steps.back() < earlier_steps.back())
+          << "), summary.txt says '" << first_line << "' ("
+          << check(earlier.find("FAILED") == std::string::npos &&
+                   first_line == "run: FAILED after step " +
+                                   std::to_string(int(steps.back())) +
+                                   " (t = " +
+                                   [&] {
+                                     std::ostringstream t;
+                                     t << 0.0125 * steps.back();
+                                     return t.str();
+                                   }() +
+                                   " s); statistics.tsv holds the "
+                                   "steps up to there" &&
+                   summary.find("Maximum active-set iterations") !=
+                     std::string::npos)
+          << ")\n";
+  }
+
+  // mesh adaptations that would outgrow the memory: a front widening of
+  // 100 with an adaptation every step grows the bar from 160 cells to
+  // millions within 8 steps (5 GB). Under an address-space limit (ulimit
+  // -v) of 3 GB the check before each refinement stops the run with a
+  // message naming the limit and the parameters (not a bare bad_alloc);
+  // the statistics of the steps before are intact and the summary says
+  // that the run failed
+  {
+    fs::remove_all("grown");
+    std::ofstream("grown.prm")
+      << base << "set Output directory = grown\n"
+      << "subsection Time integration\n  set End time = 0.15\nend\n"
+      << "subsection Mesh refinement\n  set Refinement interval = 1\n"
+      << "  set Front widening = 100\nend\n";
+    const Outcome grown = run_program("grown.prm", "ulimit -v 3000000; ");
+    const auto    steps = column_values("grown/statistics.tsv", "step");
+    log() << "adaptations past an address-space limit of 3 GB: stopped with "
+             "a message naming the limit and the parameters ("
+          << check(grown.status != 0 && without_backtrace(grown) &&
+                   error_names(grown, "the adapted mesh would have") &&
+                   error_names(grown, "address-space limit (ulimit -v)") &&
+                   error_names(grown, "Front widening (now 100)") &&
+                   grown.text.find("bad_alloc") == std::string::npos)
+          << "), the statistics of the steps before intact ("
+          << check(steps.size() > 1 && steps.back() == steps.size() - 1 &&
+                   read("grown/summary.txt").find("run: FAILED") == 0)
+          << ")\n";
+    if (grown.status == 0 || !error_names(grown, "the adapted mesh"))
+      std::cout << grown.text << std::endl;
+  }
+
   // inputs that must run
+  // an obstacle normal of length 4.9e-324 (any length > 0 is normalised;
+  // until 2026-11-29 its normal became infinite and the run failed with
+  // "the gap is not finite"): the same run as with the normal 0, 1
+  {
+    dyncontact::Statistics statistics[2];
+    bool                   ran = true;
+    for (const std::string normal : {"0, 4.9e-324", "0, 1"})
+      {
+        fs::remove_all("subnormal");
+        std::ofstream("subnormal.prm")
+          << base << "set Output directory = subnormal\n"
+          << gmsh_pairs("2 : 1, 1 : obstacle",
+                        "    set Obstacle point = 0, -0.6\n"
+                        "    set Obstacle normal = " +
+                          normal + "\n");
+        ran = ran && run_program("subnormal.prm").status == 0;
+        statistics[normal == "0, 1"] =
+          testing::read_statistics("subnormal/statistics.tsv");
+      }
+    log() << "an obstacle normal of length 4.9e-324 runs as the normal 0, 1: "
+          << check(ran && statistics[0].rows.size() == 5 &&
+                   testing::statistics_difference(statistics[0], statistics[1])
+                       .first == 0.)
+          << "\n";
+  }
+
+  // 'Bodies = 1, 2' (a comma for ';'): one body of the two blocks, which
+  // would never touch each other; a warning counts the pieces
+  {
+    std::ofstream("pieces.prm")
+      << base << "set Output directory = pieces\n"
+      << testing::scene_prm("gmsh",
+                            "    set Mesh file = two_blocks.msh\n"
+                            "    set Bodies = 1, 2\n"
+                            "    set Dirichlet tags = 10\n");
+    const Outcome pieces = run_program("pieces.prm");
+    log() << "Bodies = 1, 2: a warning says that body 1 is made of 2 "
+             "disconnected pieces: "
+          << check(pieces.text.find("warning: body 1 of mesh file") !=
+                     std::string::npos &&
+                   pieces.text.find("is made of 2 disconnected pieces") !=
+                     std::string::npos)
+          << "\n";
+  }
+
+  // entries the input sets but the run does not read: a warning before the
+  // run names each, its line and why (until 2026-11-29 the two bars ran
+  // as equal bars without a word, whatever Material of body 2 said); the
+  // entries it does read get none
+  {
+    std::ofstream("unread.prm")
+      << base << "set Output directory = unread\n"
+      << scene_prm("two bars", "    set Initial gap = 0.1\n")
+      << testing::scene_entries("Bar impact", "    set Length = 2\n")
+      << "subsection Material of body 2\n  set Young's modulus = 4\nend\n"
+      << "subsection Mesh refinement\n  set Refine fraction = 0.3\n"
+      << "  set Initial contact refinements = 2\nend\n"
+      << "subsection Output\n  set Compression = best\nend\n"
+      << "subsection Reference solution\n  set Interval = 0.2\nend\n";
+    const Outcome unread = run_program("unread.prm");
+    const auto warned = [&](const std::string &entry, const std::string &why) {
+      return unread.text.find(entry +
+                              " is set, but this run does not read "
+                              "it: " +
+                              why) != std::string::npos;
+    };
+    const std::string line = "warning: Line ";
+    log() << "entries set but not read are named with their line and why: "
+             "another scene's ("
+          << check(warned("Scene/Bar impact/Length",
+                          "the scene is 'two bars', which reads Scene/Two "
+                          "bars only"))
+          << "), Material of body 2 in the two bars ("
+          << check(warned("Material of body 2/Young's modulus",
+                          "the 'two bars' scene makes each of its 2 bodies "
+                          "of Material"))
+          << "), a mesh that does not adapt ("
+          << check(warned("Mesh refinement/Refine fraction",
+                          "the mesh does not adapt during the run"))
+          << "), no VTU files ("
+          << check(warned("Output/Compression", "Output/Write vtu = false"))
+          << "), no reference states ("
+          << check(warned("Reference solution/Interval",
+                          "neither Write states nor Compare with states"))
+          << "); the initial contact refinements that refine nothing ("
+          << check(unread.text.find("Initial contact refinements = 2: no "
+                                    "cell was refined") != std::string::npos)
+          << "); nothing else ("
+          << check(
+               unread.status == 0 &&
+               std::count(unread.text.begin(), unread.text.end(), '\n') > 0 &&
+               [&] {
+                 std::size_t n = 0;
+                 for (auto at = unread.text.find(line); at != std::string::npos;
+                      at      = unread.text.find(line, at + 1))
+                   ++n;
+                 return n == 5;
+               }())
+          << ")\n";
+  }
+
+  // a static problem of viscous bodies: no time, so no viscous work and no
+  // energy balance (until 2026-11-29 both were computed with the unused
+  // Time step: W_visc > 0 and a positive energy_balance)
+  {
+    std::ofstream("static_viscous.prm")
+      << base << "set Output directory = static_viscous\n"
+      << scene_prm("hertz")
+      << "subsection Time integration\n  set Scheme = static\nend\n"
+      << "subsection Material\n  set Viscous shear modulus = 10\nend\n";
+    const Outcome ran = run_program("static_viscous.prm");
+    const auto    w =
+      column_values("static_viscous/statistics.tsv", "dissipation_viscous");
+    const auto balance =
+      column_values("static_viscous/statistics.tsv", "energy_balance");
+    log() << "a static problem of viscous bodies: dissipation_viscous and "
+             "energy_balance are 0: "
+          << check(ran.status == 0 && w.size() >= 2 && w.back() == 0. &&
+                   balance.back() == 0.)
+          << "\n";
+  }
+
   std::ofstream("bom.prm") << "\xEF\xBB\xBF" << base;
   log() << "a UTF-8 byte-order mark is ignored: "
         << check(run_program("bom.prm").status == 0) << "\n";
@@ -797,7 +1102,8 @@ main(int argc, char **argv)
     << "subsection Time integration\n  set End time = 0.2\n"
     << "  set Time step = 0.0125\nend\n"
     << testing::scene_prm("two bars")
-    << "subsection Contact\n  set Search radius = 0.01\nend\n";
+    << "subsection Contact\n  set Search radius = 0.01\n"
+    << "  set Pair without rows = warn\nend\n";
   const Outcome missed = run_program("missed.prm");
   const auto    penetration =
     column_values("missed/statistics.tsv", "max_penetration");

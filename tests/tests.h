@@ -383,14 +383,15 @@ namespace testing
            outcome.text.find("An error occurred in") == std::string::npos;
   }
 
-  /// Runs the dyncontact executable with @p arguments; exit status and all
-  /// it printed.
+  /// Runs the dyncontact executable with @p arguments (after the shell
+  /// text @p prefix, e.g. "ulimit -v 100000; "); exit status and all it
+  /// printed.
   inline Outcome
-  run_program(const std::string &arguments)
+  run_program(const std::string &arguments, const std::string &prefix = "")
   {
 #ifdef DYNCONTACT_EXECUTABLE
     const std::string command =
-      std::string(DYNCONTACT_EXECUTABLE) + " " + arguments + " 2>&1";
+      prefix + std::string(DYNCONTACT_EXECUTABLE) + " " + arguments + " 2>&1";
     FILE       *pipe = popen(command.c_str(), "r");
     std::string text;
     char        buffer[4096];

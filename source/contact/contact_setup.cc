@@ -44,6 +44,18 @@ namespace dyncontact
                       "master body): reject it with a message, or project "
                       "the initial displacement onto K_h (the M-projection) "
                       "with a warning that says by how much.");
+    prm.declare_entry("Pair without rows",
+                      "refuse",
+                      Patterns::Selection("refuse|warn"),
+                      "What to do with a contact pair (or the rigid "
+                      "obstacle) none of whose slave nodes gets a "
+                      "constraint row at t = 0 (all of them clamped, or "
+                      "none within the search radius of the master "
+                      "surface), whose bodies could pass through each other "
+                      "unseen: refuse the run with a message naming the "
+                      "pair and why, or run it with a warning (the "
+                      "penetration of such nodes is still measured in "
+                      "max_penetration).");
     prm.leave_subsection();
   }
 
@@ -58,6 +70,7 @@ namespace dyncontact
     slave_side              = (slave == "auto") ? -1 : (slave == "1" ? 0 : 1);
     search_radius           = prm.get_double("Search radius");
     project_initial_penetration = (prm.get("Initial penetration") == "project");
+    refuse_pair_without_rows    = (prm.get("Pair without rows") == "refuse");
     prm.leave_subsection();
   }
 
@@ -80,7 +93,7 @@ namespace dyncontact
     std::vector<ContactPair> pairs = scene.contact_pairs();
     for (ContactPair &pair : pairs)
       {
-        if (parameters.slave_side >= 0)
+        if (parameters.slave_side >= 0 && !pair.own_slave_side)
           pair.slave_side = parameters.slave_side;
         if (parameters.search_radius > 0. && !pair.own_search_radius)
           pair.search_radius = parameters.search_radius;
@@ -94,6 +107,15 @@ namespace dyncontact
   void
   ContactSetup<dim>::check(const Scene<dim> &scene) const
   {
+    for (const ContactPair &pair : scene.contact_pairs())
+      AssertThrow(parameters.slave_side < 0 || !pair.own_slave_side,
+                  ExcMessage("Contact/Slave side = " +
+                             std::to_string(parameters.slave_side + 1) +
+                             " would override the 'slave : master' order of "
+                             "Scene/Gmsh/Contact pairs, which names each "
+                             "pair's slave: leave Contact/Slave side at auto, "
+                             "and write the pair the other way round to "
+                             "swap its sides."));
     for (const ContactPair &pair : contact_pairs(scene))
       AssertThrow(pair.search_radius > 0.,
                   ExcMessage("Contact/Search radius must be > 0 (m) for the "
@@ -117,6 +139,7 @@ namespace dyncontact
     rows.rows.clear();
     unmatched.clear();
     master_surfaces.clear();
+    pairs_without_rows.clear();
     locally_owned              = system.locally_owned_dofs();
     locally_relevant           = system.locally_relevant_dofs();
     const VectorType w_ghosted = system.ghosted(system.get_boundary_weights());
@@ -375,7 +398,8 @@ namespace dyncontact
     const AffineConstraints<double> &constraints)
   {
     // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
-    std::string penetration;
+    std::string       penetration;
+    const std::size_t n_rows_before = rows.size();
     for (const BoundaryNode &node : nodes)
       {
         const Point<dim> &x = node.x;
@@ -411,8 +435,33 @@ namespace dyncontact
       }
     // (every rank stops, also those without such a node)
     stop_with_any_message(penetration, comm);
+    const types::global_dof_index n_nodes =
+      Utilities::MPI::sum<types::global_dof_index>(nodes.size(), comm);
+    const types::global_dof_index n_rows =
+      Utilities::MPI::sum<types::global_dof_index>(rows.size() - n_rows_before,
+                                                   comm);
+    if (n_rows == 0 && kept_slave_sides.empty())
+      add_pair_without_rows(
+        "pair " + std::to_string(pair_index + 1) + " (the rigid obstacle)",
+        n_nodes == 0 ? "no boundary face carries its contact tags" :
+                       "all " + std::to_string(n_nodes) +
+                         " of its slave nodes lie on a Dirichlet boundary",
+        "Take the contact tags off the clamped faces, or the clamped faces "
+        "out of the Dirichlet tags.");
   }
 
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::add_pair_without_rows(const std::string &pair,
+                                           const std::string &reason,
+                                           const std::string &remedy)
+  {
+    pairs_without_rows.push_back(
+      "Contact " + pair + " has no constraint row at t = 0: " + reason +
+      ", so its bodies could pass through each other unseen. " + remedy);
+  }
 
 
   template <int dim>
@@ -495,16 +544,29 @@ namespace dyncontact
       pair.search_radius);
     // slave nodes that Dirichlet data fix in every direction of their row
     unsigned int n_clamped = 0;
-    std::string  penetration;
+    // (for a pair without rows: slave nodes fixed in every direction, and
+    // those that find a master face)
+    types::global_dof_index n_fixed = 0, n_imaged = 0;
+    const std::size_t       n_rows_before = rows.size();
+    std::string             penetration;
     for (const BoundaryNode &node : nodes)
       {
         const Point<dim> &x     = node.x;
         const auto        image = phi.find_image(x);
+        bool              fixed = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          fixed = fixed &&
+                  system.get_constraints().is_constrained(node.dofs[d]) &&
+                  system.get_constraints()
+                    .get_constraint_entries(node.dofs[d])
+                    ->empty();
+        n_fixed += fixed;
         if (!image)
           {
             unmatched.push_back({x, node.dofs, pair_index});
             continue;
           }
+        ++n_imaged;
         auto       projection = *image;
         const bool inside     = (x - image->point) * image->master_normal <
                             -1e-10 * pair.search_radius;
@@ -543,6 +605,59 @@ namespace dyncontact
     // (every rank stops, also those without such a node)
     stop_with_any_message(penetration, comm);
     refuse_clamped_slave_nodes(n_clamped, pair_index, slave, comm);
+    std::vector<types::global_dof_index> counts = {nodes.size(),
+                                                   n_fixed,
+                                                   n_imaged,
+                                                   rows.size() - n_rows_before};
+    Utilities::MPI::sum(counts, comm, counts);
+    if (counts[3] == 0 && kept_slave_sides.empty())
+      {
+        std::ostringstream radius; // 6 digits
+        radius << pair.search_radius;
+        const std::string name =
+          several_pairs ?
+            "pair " + std::to_string(pair_index + 1) +
+              (pair_index < side_bodies.size() ?
+                 " (slave body " + side_bodies[pair_index][slave] +
+                   ", master body " + side_bodies[pair_index][1 - slave] + ")" :
+                 std::string()) :
+            "pair (slave side " + std::to_string(slave + 1) + ")";
+        if (counts[0] == 0)
+          add_pair_without_rows(
+            name,
+            "no boundary face of its slave side carries its contact tags",
+            "Check the contact tags of the scene.");
+        else if (counts[1] == counts[0])
+          add_pair_without_rows(
+            name,
+            "all " + std::to_string(counts[0]) +
+              " of its slave nodes lie on a Dirichlet boundary",
+            std::string("Take the contact tags off the clamped faces, or "
+                        "make the clamped side the master (") +
+              (pair.own_slave_side ?
+                 "write the pair the other way round" :
+                 "Contact/Slave side = " + std::to_string(2 - slave)) +
+              ").");
+        else if (counts[2] == 0)
+          add_pair_without_rows(
+            name,
+            "none of its " + std::to_string(counts[0]) +
+              " slave nodes lies within the search radius (" + radius.str() +
+              " m) of a master face",
+            std::string("Raise ") +
+              (pair.own_search_radius ?
+                 "the pair's own radius (Scene/Gmsh/Contact pairs 'slave : "
+                 "master : radius')" :
+                 "Contact/Search radius") +
+              " above the gap the bodies close during the run, and check "
+              "that the contact tags name the faces that meet.");
+        else
+          add_pair_without_rows(
+            name,
+            "its slave nodes within the search radius of a master face "
+            "are fixed by Dirichlet data or hanging",
+            "Check the contact and Dirichlet tags of the scene.");
+      }
     pcout << "   contact pair"
           << (several_pairs ? " " + std::to_string(pair_index + 1) :
                               std::string())
@@ -669,6 +784,23 @@ namespace dyncontact
   void
   ContactSetup<dim>::refuse_initial_overlap(const VectorType &u) const
   {
+    refuse_unmatched_overlap(u);
+    for (const std::string &text : pairs_without_rows)
+      {
+        AssertThrow(!parameters.refuse_pair_without_rows,
+                    ExcMessage(text + " (Contact/Pair without rows = warn "
+                                      "runs it anyway.)"));
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          std::cout << "   warning: " << text << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSetup<dim>::refuse_unmatched_overlap(const VectorType &u) const
+  {
     const Penetration deepest = unmatched_penetration(u);
     if (deepest.depth <= 0.)
       return;
@@ -707,7 +839,12 @@ namespace dyncontact
                        " m: Contact/Search radius, or the pair's own) from "
                        "the master surface, so that it got no row that "
                        "could reject or project it.") +
-                  " Correct the mesh or the initial displacement."));
+                  " (It lies behind the nearest master face, on the side "
+                  "its outward normal points away from.) Correct the mesh "
+                  "or the initial displacement; or, if the bodies do not "
+                  "overlap, the master's contact tags name faces on its far "
+                  "side, which look away from the slave: tag the faces "
+                  "that meet."));
   }
 
 

@@ -27,11 +27,21 @@ namespace dyncontact
     std::string
     expand_includes(const std::string        &text,
                     const std::string        &source,
+                    const std::string        &includer,
                     std::vector<std::string> &chain,
                     std::vector<std::string> &chain_lines,
                     std::vector<std::string> &origins)
     {
-      std::string body = text;
+      // an included file closes the subsections it opens, as deal.II's own
+      // 'include' demands (pasted into the including text, an unclosed one
+      // would be reported there, without the included file's name)
+      const bool        is_included = !includer.empty();
+      const std::string as_included =
+        is_included ? "'" + source + "' (included at line " +
+                        chain_lines.back() + " of '" + includer + "')" :
+                      "";
+      std::vector<std::pair<std::string, unsigned int>> open;
+      std::string                                       body = text;
       if (body.rfind("\xEF\xBB\xBF", 0) == 0)
         body.erase(0, 3);
       std::istringstream in(body);
@@ -49,6 +59,24 @@ namespace dyncontact
               out << line << "\n";
               origins.push_back("Line " + std::to_string(line_number) +
                                 " of '" + source + "'");
+              if (!is_included || first == std::string::npos)
+                continue;
+              std::string entry = line.substr(first, line.find('#') - first);
+              entry.erase(entry.find_last_not_of(" \t\r") + 1);
+              if (entry.rfind("subsection ", 0) == 0 ||
+                  entry.rfind("SUBSECTION ", 0) == 0)
+                open.emplace_back(entry.substr(11), line_number);
+              else if (entry == "end" || entry == "END")
+                {
+                  AssertThrow(!open.empty(),
+                              ExcMessage(
+                                as_included + ": the 'end' at its line " +
+                                std::to_string(line_number) +
+                                " closes a subsection that the file did not "
+                                "open; an included file must close exactly "
+                                "the subsections it opens."));
+                  open.pop_back();
+                }
               continue;
             }
           std::string name = line.substr(first + 8);
@@ -99,10 +127,18 @@ namespace dyncontact
           chain_lines.push_back(std::to_string(line_number));
           chain.push_back(canonical);
           out << expand_includes(
-            included.str(), path.string(), chain, chain_lines, origins);
+            included.str(), path.string(), source, chain, chain_lines, origins);
           chain.pop_back();
           chain_lines.pop_back();
         }
+      AssertThrow(open.empty(),
+                  ExcMessage(
+                    as_included + ": 'subsection " +
+                    (open.empty() ? "" : open.back().first) + "' at its line " +
+                    std::to_string(open.empty() ? 0 : open.back().second) +
+                    " has no 'end' before the file ends; an "
+                    "included file must close the subsections it "
+                    "opens."));
       return out.str();
     }
   } // namespace
@@ -119,7 +155,7 @@ namespace dyncontact
       std::filesystem::weakly_canonical(source, error).string()};
     std::vector<std::string> chain_lines;
     origins.clear();
-    return expand_includes(text, source, chain, chain_lines, origins);
+    return expand_includes(text, source, "", chain, chain_lines, origins);
   }
 
 
@@ -343,11 +379,41 @@ namespace dyncontact
 
 
 
-  void
+  std::string
+  unread_entry_warnings(
+    const std::vector<std::pair<std::string, std::string>> &set_entries,
+    const std::string                                      &scene_name,
+    const std::string                                      &scene_subsection,
+    const std::vector<std::pair<std::string, std::string>> &unread)
+  {
+    std::ostringstream    text;
+    std::set<std::string> warned;
+    for (const auto &[name, origin] : set_entries)
+      {
+        std::string reason;
+        if (name.rfind("Scene/", 0) == 0 && name != "Scene/Name" &&
+            name.rfind(scene_subsection + "/", 0) != 0)
+          reason = "the scene is '" + scene_name + "', which reads " +
+                   scene_subsection + " only";
+        for (const auto &[prefix, why] : unread)
+          if (reason.empty() &&
+              (name == prefix || name.rfind(prefix + "/", 0) == 0))
+            reason = why;
+        if (!reason.empty() && warned.insert(name).second)
+          text << "   warning: " << origin << ": " << name
+               << " is set, but this run does not read it: " << reason << ".\n";
+      }
+    return text.str();
+  }
+
+
+
+  std::vector<std::pair<std::string, std::string>>
   check_for_misplaced_entries(const std::string              &text,
                               const std::vector<std::string> &origins)
   {
-    ParameterHandler prm;
+    std::vector<std::pair<std::string, std::string>> set_entries;
+    ParameterHandler                                 prm;
     declare_all_parameters(prm);
     const std::set<std::string> declared = declared_entries(prm);
 
@@ -392,10 +458,12 @@ namespace dyncontact
                               entry,
                               Utilities::trim(line.substr(line.find('=') + 1)),
                               at);
+                set_entries.emplace_back(where + entry, origin);
                 continue;
               }
             refuse_misplaced(declared, path, entry, at);
           }
       }
+    return set_entries;
   }
 } // namespace dyncontact

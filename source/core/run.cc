@@ -19,7 +19,7 @@ namespace dyncontact
   {
     std::vector<std::string> origins;
     const std::string        text = expand_includes(prm_text, source, origins);
-    check_for_misplaced_entries(text, origins);
+    const auto       set_entries  = check_for_misplaced_entries(text, origins);
     ParameterHandler prm;
     declare_all_parameters(prm);
     std::istringstream in(text);
@@ -39,9 +39,9 @@ namespace dyncontact
       input_directory = std::filesystem::path(source).parent_path().string();
 
     if (prm.get_integer("Dimension") == 2)
-      return Simulator<2>(prm, input_directory, comm).run();
+      return Simulator<2>(prm, input_directory, comm, set_entries).run();
     else
-      return Simulator<3>(prm, input_directory, comm).run();
+      return Simulator<3>(prm, input_directory, comm, set_entries).run();
   }
 
 

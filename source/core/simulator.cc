@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/core/parameter_file.h>
 #include <dyncontact/core/simulator.h>
@@ -21,9 +22,11 @@
 namespace dyncontact
 {
   template <int dim>
-  Simulator<dim>::Simulator(ParameterHandler  &prm,
-                            const std::string &input_directory,
-                            const MPI_Comm     comm)
+  Simulator<dim>::Simulator(
+    ParameterHandler                                       &prm,
+    const std::string                                      &input_directory,
+    const MPI_Comm                                          comm,
+    const std::vector<std::pair<std::string, std::string>> &set_entries)
     : parameters(parsed<GlobalParameters>(prm))
     , comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
@@ -78,6 +81,36 @@ namespace dyncontact
     reference_states->initialize_simulator(*this);
     postprocessors->initialize_simulator(*this);
     run_report.initialize_simulator(*this);
+    warn_of_unread_entries(set_entries);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::warn_of_unread_entries(
+    const std::vector<std::pair<std::string, std::string>> &set_entries) const
+  {
+    // (subsection or entry, why the run does not read it)
+    std::vector<std::pair<std::string, std::string>> unread =
+      scene->unread_entries();
+    for (const auto &entry : mesh_adaptor->unread_entries(scheme.is_static))
+      unread.push_back(entry);
+    if (!scene->has_exact_solution() || scheme.is_static)
+      unread.emplace_back("Postprocess/Error energy norm",
+                          scheme.is_static ?
+                            "the static problem has no exact solution in "
+                            "time to compare with" :
+                            "the '" + scene->name() +
+                              "' scene has no exact solution");
+    for (const auto &entry : vtu_writer->unread_entries())
+      unread.push_back(entry);
+    for (const auto &entry : reference_states->unread_entries())
+      unread.push_back(entry);
+    pcout << unread_entry_warnings(set_entries,
+                                   scene->name(),
+                                   scene->subsection(),
+                                   unread);
   }
 
 
@@ -98,6 +131,23 @@ namespace dyncontact
       {
         p.get_system().interpolate_initial_values(*scene, p.u, p.udot);
         mesh_adaptor->mark_contact_zone();
+        if (!p.check_flagged_mesh_fits_in_memory(*scene,
+                                                 mesh_adaptor->memory_remedy()))
+          {
+            // (nothing more would change)
+            pcout << "   warning: Mesh refinement/Initial contact refinements "
+                     "= "
+                  << mesh_adaptor->n_initial_refinements() << ": "
+                  << (k == 0 ? std::string("no cell was refined") :
+                               "only " + std::to_string(k) + " refined cells") +
+                       ": no slave node is in the contact zone at t = 0 "
+                       "(its gap below Mesh refinement/Contact zone/Distance "
+                       "or two cell sizes), as at the start of an impact "
+                       "across a gap, or its cells are at Mesh "
+                       "refinement/Maximum level (now "
+                  << mesh_adaptor->get_max_level() << ")." << std::endl;
+            break;
+          }
         p.triangulation.execute_coarsening_and_refinement();
         p.setup(*scene, *timer);
       }
@@ -129,7 +179,10 @@ namespace dyncontact
   void
   Simulator<dim>::open_outputs()
   {
+    // (from here on a failure leaves this run's files: its summary says so)
+    outputs_open = true;
     postprocessors->open_file(parameters.output_directory + "/statistics.tsv");
+    run_report.remove_earlier_summary();
     vtu_writer->remove_later_files();
     if (vtu_writer->is_enabled() && !checkpoints.resume())
       {
@@ -141,7 +194,6 @@ namespace dyncontact
         if (after_step)
           problem->swap_with_initial_state();
       }
-    outputs_open = true;
   }
 
 
@@ -220,6 +272,7 @@ namespace dyncontact
     const auto [energy_change, violation] = problem->adapt_mesh(
       *scene,
       [this]() { mesh_adaptor->mark_cells(problem->triangulation); },
+      mesh_adaptor->memory_remedy(),
       *timer);
     mesh_transfer.add(energy_change, violation);
   }
@@ -303,8 +356,13 @@ namespace dyncontact
           << std::endl;
     // the output directory must be writable; nothing in it is touched
     // before the setup has succeeded
-    output_directory =
-      std::make_unique<OutputDirectory>(parameters.output_directory, comm);
+    output_directory = std::make_unique<OutputDirectory>(
+      parameters.output_directory,
+      std::vector<std::string>{"statistics.tsv",
+                               RunReport<dim>::file_name,
+                               "solution.pvd",
+                               "checkpoints/"},
+      comm);
     problem->build_mesh(*scene,
                         parameters.initial_refinements,
                         checkpoints.resume(),
@@ -379,11 +437,22 @@ namespace dyncontact
       {
         run_time_loop();
       }
-    catch (...)
+    catch (const std::exception &e)
       {
         // TimerOutput would otherwise print an MPI warning while the
         // exception unwinds; the user gets the exception's message instead
         timer.reset();
+        // this run's files have begun: its summary says that it failed
+        // (before, the output directory is as the earlier run left it)
+        if (outputs_open)
+          run_report.write_failed_summary(message_of(e));
+        throw;
+      }
+    catch (...)
+      {
+        timer.reset();
+        if (outputs_open)
+          run_report.write_failed_summary("an unknown error");
         throw;
       }
     return postprocessors->get_statistics();

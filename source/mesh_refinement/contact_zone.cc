@@ -29,8 +29,9 @@ namespace dyncontact
                           "0",
                           Patterns::Double(0.),
                           "A slave node is in the contact zone when its "
-                          "current gap is below this distance, in m; 0: two "
-                          "cell sizes at the node.");
+                          "current gap is below this distance or below two "
+                          "cell sizes at the node, whichever is larger, in "
+                          "m; 0: two cell sizes.");
         prm.leave_subsection();
         prm.leave_subsection();
       }

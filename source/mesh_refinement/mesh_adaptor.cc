@@ -463,6 +463,62 @@ namespace dyncontact
 
 
   template <int dim>
+  std::vector<std::pair<std::string, std::string>>
+  MeshAdaptor<dim>::unread_entries(const bool is_static) const
+  {
+    const bool        adapts = interval > 0 && !is_static;
+    const std::string why =
+      interval > 0 ? "the static problem takes no time steps (one solve), so "
+                     "the mesh does not adapt during the run" :
+                     "the mesh does not adapt during the run (Mesh "
+                     "refinement/Refinement interval = 0)";
+    std::vector<std::pair<std::string, std::string>> unread;
+    if (adapts)
+      {
+        if (initial_refinements == 0 &&
+            std::find(criterion_names.begin(),
+                      criterion_names.end(),
+                      "contact zone") == criterion_names.end())
+          unread.emplace_back("Mesh refinement/Contact zone",
+                              "no criterion of Mesh refinement/Criteria is "
+                              "the contact zone, and Initial contact "
+                              "refinements = 0");
+        return unread;
+      }
+    for (const std::string entry : {"Refinement interval",
+                                    "Refine fraction",
+                                    "Coarsen fraction",
+                                    "Minimum level",
+                                    "Front widening",
+                                    "Criteria"})
+      if (entry != std::string("Refinement interval") || interval > 0)
+        unread.emplace_back("Mesh refinement/" + entry, why);
+    if (initial_refinements == 0)
+      for (const std::string entry : {"Maximum level", "Contact zone"})
+        unread.emplace_back("Mesh refinement/" + std::string(entry),
+                            why + ", and Initial contact refinements = 0");
+    return unread;
+  }
+
+
+
+  template <int dim>
+  std::string
+  MeshAdaptor<dim>::memory_remedy() const
+  {
+    std::ostringstream text; // 6 digits
+    text << "Mesh refinement/Maximum level (now " << max_level
+         << "), Refine fraction (now " << refine_fraction << ")";
+    if (front_widening > 0.)
+      text << ", Front widening (now " << front_widening << ")";
+    text << " or Initial contact refinements (now " << initial_refinements
+         << ")";
+    return text.str();
+  }
+
+
+
+  template <int dim>
   void
   MeshAdaptor<dim>::mark_contact_zone() const
   {

@@ -195,7 +195,12 @@ namespace dyncontact
           // but the previous one
           const std::string name     = std::filesystem::path(dir).filename();
           const std::string previous = last_name(root).value_or("");
-          std::ofstream     last(root + "/last.tmp");
+          // (a link or FIFO left there is replaced, not written through)
+          std::error_code ignored;
+          if (!std::filesystem::is_directory(
+                std::filesystem::symlink_status(root + "/last.tmp", ignored)))
+            std::filesystem::remove(root + "/last.tmp", ignored);
+          std::ofstream last(root + "/last.tmp");
           last << name << "\n";
           last.close();
           AssertThrow(last.good(),

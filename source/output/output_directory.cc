@@ -56,12 +56,47 @@ namespace dyncontact
       ::close(fd);
       return written;
     }
+
+    /// What stands at @p path, if it is not a regular file ("" if it is one
+    /// or nothing is there): the run neither writes through a symbolic link
+    /// nor opens a FIFO or a device, which could block it for ever.
+    std::string
+    special_file_kind(const std::string &path)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      switch (fs::symlink_status(path, error).type())
+        {
+          case fs::file_type::not_found:
+          case fs::file_type::none:
+            return "";
+          case fs::file_type::regular:
+            // (writing it would change the file of its other names)
+            return fs::hard_link_count(path, error) > 1 && !error ?
+                     "a file with other names (a hard link)" :
+                     "";
+          case fs::file_type::symlink:
+            return "a symbolic link";
+          case fs::file_type::fifo:
+            return "a FIFO";
+          case fs::file_type::directory:
+            return "a directory";
+          case fs::file_type::block:
+          case fs::file_type::character:
+            return "a device";
+          case fs::file_type::socket:
+            return "a socket";
+          default:
+            return "not a regular file";
+        }
+    }
   } // namespace
 
 
 
-  OutputDirectory::OutputDirectory(const std::string &directory,
-                                   const MPI_Comm     comm)
+  OutputDirectory::OutputDirectory(const std::string              &directory,
+                                   const std::vector<std::string> &files,
+                                   const MPI_Comm                  comm)
     : lock_file(directory + "/.lock")
   {
     std::string problem;
@@ -79,6 +114,35 @@ namespace dyncontact
         if (!std::filesystem::is_directory(directory, error))
           problem = "Output directory '" + shown + "' cannot be created" +
                     (error ? ": " + error.message() : " (it is a file)") + ".";
+        else
+          {
+            std::vector<std::string> names = files;
+            names.push_back(".lock");
+            for (const std::string &name : names)
+              {
+                // (a folder's name ends in '/')
+                const std::string path =
+                  directory + "/" + name.substr(0, name.find('/'));
+                const std::string kind =
+                  name.back() == '/' ?
+                    (std::filesystem::exists(path, error) &&
+                         !std::filesystem::is_directory(path, error) ?
+                       "not a directory" :
+                       "") :
+                    special_file_kind(path);
+                if (problem.empty() && !kind.empty())
+                  problem = "'" + directory + "/" + name + "' is " + kind +
+                            (name.back() == '/' ?
+                               ": the run writes its checkpoints into this "
+                               "folder." :
+                               ", not a regular file: the run writes " + name +
+                                 " itself and neither writes through nor "
+                                 "opens such a file.") +
+                            " Remove it, or choose another Output directory.";
+              }
+          }
+        if (!problem.empty())
+          owns_lock = false;
         else if (!create_lock(lock_file))
           {
             // someone else's lock: alive, or left by a killed run?

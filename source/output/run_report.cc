@@ -13,6 +13,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -150,7 +151,7 @@ namespace dyncontact
     const std::string text =
       summary_text(this->get_statistics(), input, statistics_lines(input));
     const std::string file =
-      this->get_parameters().output_directory + "/summary.txt";
+      this->get_parameters().output_directory + "/" + file_name;
     std::string failure;
     if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) == 0)
       {
@@ -164,6 +165,52 @@ namespace dyncontact
     stop_with_message_of_rank_0(failure, this->get_mpi_communicator());
     this->get_pcout() << "\nSummary (also in " << file << "):\n"
                       << text << std::flush;
+  }
+
+
+
+  template <int dim>
+  void
+  RunReport<dim>::remove_earlier_summary() const
+  {
+    const std::string file =
+      this->get_parameters().output_directory + "/" + file_name;
+    std::string failure;
+    if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) == 0)
+      {
+        std::error_code error;
+        std::filesystem::remove(file, error);
+        if (error)
+          failure = "Cannot remove '" + file +
+                    "', the summary of an earlier run: " + error.message() +
+                    ".";
+      }
+    stop_with_message_of_rank_0(failure, this->get_mpi_communicator());
+  }
+
+
+
+  template <int dim>
+  void
+  RunReport<dim>::write_failed_summary(
+    const std::string &message) const noexcept
+  {
+    try
+      {
+        if (Utilities::MPI::this_mpi_process(this->get_mpi_communicator()) != 0)
+          return;
+        const SimulationControl &control = this->get_control();
+        std::ofstream out(this->get_parameters().output_directory + "/" +
+                          file_name);
+        out << std::setprecision(6) << "run: FAILED after step "
+            << control.get_step() << " (t = " << control.get_time()
+            << " s); statistics.tsv holds the steps up to there\n"
+            << "error: " << message << "\n";
+      }
+    catch (...)
+      {
+        // the run's own error is reported; this record is the best effort
+      }
   }
 
 

@@ -116,7 +116,10 @@ namespace dyncontact
         VectorType                     M_udot(u);
         const auto [kinetic, elastic] =
           system.energies(u, this->get_velocity(), M_udot);
-        if (this->get_control().get_step() > 0 && system.is_viscous())
+        // (the static problem has no time: no viscous work, no balance)
+        const bool is_static = this->get_integrator().get_scheme().is_static;
+        if (this->get_control().get_step() > 0 && system.is_viscous() &&
+            !is_static)
           {
             VectorType du(u), B_du(u);
             du -= this->get_old_solution();
@@ -131,14 +134,14 @@ namespace dyncontact
           initial = total;
         else
           transfers += this->get_mesh_transfer().energy_change;
-        const double balance   = total - initial - transfers;
+        const double balance   = is_static ? 0. : total - initial - transfers;
         scale                  = std::max(scale,
                          kinetic + std::abs(elastic) + dissipation + numerical);
         const double tolerance = this->get_integrator()
                                    .get_operators()
                                    .get_solver_parameters()
                                    .energy_tolerance();
-        if (step > 0 && !this->get_integrator().get_scheme().is_static &&
+        if (step > 0 && !is_static &&
             balance - previous_balance > tolerance * scale)
           {
             ++n_increases;

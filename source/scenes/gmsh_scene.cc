@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <unordered_set>
 
@@ -178,6 +179,32 @@ namespace dyncontact
                             "separately."));
             }
         }
+      // the pieces of each body: cells joined by shared vertices (the
+      // coarse mesh is whole on every rank)
+      std::vector<unsigned int> parent(tria.n_vertices());
+      std::iota(parent.begin(), parent.end(), 0u);
+      const auto root = [&](unsigned int v) {
+        while (parent[v] != v)
+          v = parent[v] = parent[parent[v]];
+        return v;
+      };
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto v : cell->vertex_indices())
+          parent[root(cell->vertex_index(v))] = root(cell->vertex_index(0));
+      std::vector<std::set<unsigned int>> pieces(body_tags.size());
+      for (const auto &cell : tria.active_cell_iterators())
+        pieces[cell->material_id()].insert(root(cell->vertex_index(0)));
+      for (unsigned int b = 0; b < body_tags.size(); ++b)
+        if (pieces[b].size() > 1 &&
+            Utilities::MPI::this_mpi_process(tria.get_communicator()) == 0)
+          std::cout << "   warning: body " << b + 1 << " of mesh file '"
+                    << mesh_file << "' is made of " << pieces[b].size()
+                    << " disconnected pieces: they move as parts of one "
+                       "body and never touch each other (no contact is "
+                       "sought between them). If they are separate bodies, "
+                       "give each its own entry (bodies are separated by ';' "
+                       "in Scene/Gmsh/Bodies)."
+                    << std::endl;
       for (unsigned int b = 0; b < body_tags.size(); ++b)
         for (const auto tag : body_tags[b])
           AssertThrow(cell_tags.count(tag),
@@ -336,8 +363,8 @@ namespace dyncontact
                       "With Bodies: the contact pairs as 'slave : master' "
                       "body numbers, comma-separated (e.g. '2 : 1, 3 : 2'); "
                       "a pair's surfaces are the Contact tags of its bodies, "
-                      "its slave's nodes carry the rows (unless "
-                      "Contact/Slave side says 1 or 2), and a slave node "
+                      "its slave's nodes carry the rows (Contact/Slave "
+                      "side must then be auto), and a slave node "
                       "that finds a master surface in two pairs keeps the "
                       "row of the nearer. The master can be 'obstacle', the "
                       "rigid obstacle of Obstacle point and Obstacle normal "
@@ -369,6 +396,24 @@ namespace dyncontact
                       "must be 0); the body force is rho g.");
     prm.leave_subsection();
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, std::string>>
+  GmshScene<dim>::unread_entries() const
+  {
+    auto unread = Scene<dim>::unread_entries();
+    if (neumann_tags.empty())
+      unread.emplace_back("Scene/Gmsh/Neumann traction",
+                          "Scene/Gmsh/Neumann tags is empty, so no boundary "
+                          "carries the traction");
+    if (!pairs_listed && body_tags.size() == 1)
+      unread.emplace_back("Scene/Gmsh/Initial velocity of body 2",
+                          "the mesh has one body (Scene/Gmsh/Body 2 tags is "
+                          "empty)");
+    return unread;
   }
 
 
@@ -630,9 +675,13 @@ namespace dyncontact
             AssertThrow(largest > 0.,
                         ExcMessage("Scene/Gmsh/Obstacle normal = '" + normal +
                                    "' must have a length > 0."));
-            rigid_obstacle.normal /= largest;
+            // (component by component: Tensor's /= multiplies by the
+            // reciprocal, which is infinite for a subnormal largest)
+            for (unsigned int d = 0; d < dim; ++d)
+              rigid_obstacle.normal[d] = rigid_obstacle.normal[d] / largest;
             const double length = rigid_obstacle.normal.norm();
-            rigid_obstacle.normal /= length;
+            for (unsigned int d = 0; d < dim; ++d)
+              rigid_obstacle.normal[d] = rigid_obstacle.normal[d] / length;
           }
         // contact tags that no pair uses: bodies that would pass through
         // each other unnoticed
@@ -706,7 +755,10 @@ namespace dyncontact
         // Body 1 tags and Body 2 tags: Contact/Slave side decides (auto:
         // the finer side); a list of pairs names the slave
         if (pairs_listed)
-          pair.slave_side = 0;
+          {
+            pair.slave_side     = 0;
+            pair.own_slave_side = true;
+          }
         pair.search_radius     = body_pair.search_radius;
         pair.own_search_radius = body_pair.search_radius > 0.;
         result.push_back(pair);

@@ -65,6 +65,25 @@ namespace dyncontact
 
 
   template <int dim>
+  std::vector<std::pair<std::string, std::string>>
+  Scene<dim>::unread_entries() const
+  {
+    const auto subsections = material_subsections();
+    if (std::find(subsections.begin(),
+                  subsections.end(),
+                  "Material of body 2") != subsections.end())
+      return {};
+    return {{"Material of body 2",
+             "the '" + name() + "' scene makes " +
+               (n_bodies() == 1 ?
+                  std::string("its one body") :
+                  "each of its " + std::to_string(n_bodies()) + " bodies") +
+               " of Material"}};
+  }
+
+
+
+  template <int dim>
   std::string
   Scene<dim>::subsection() const
   {

@@ -342,9 +342,43 @@ namespace dyncontact
 
 
   template <int dim>
+  bool
+  DiscreteProblem<dim>::check_flagged_mesh_fits_in_memory(
+    const Scene<dim>  &scene,
+    const std::string &remedy) const
+  {
+    double refined = 0., coarsened = 0.;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          refined += cell->refine_flag_set();
+          coarsened += cell->coarsen_flag_set();
+        }
+    refined               = Utilities::MPI::sum(refined, comm);
+    coarsened             = Utilities::MPI::sum(coarsened, comm);
+    const double children = 1 << dim;
+    const double n_cells  = triangulation.n_global_active_cells();
+    const double growth   = (children - 1.) * (refined - coarsened / children);
+    if (growth > 0.)
+      check_mesh_fits_in_memory(n_cells + growth,
+                                dim,
+                                system->get_fe().degree,
+                                scene.stores_step_matrix(),
+                                scene.n_coarse_cells(),
+                                remedy,
+                                comm,
+                                n_cells,
+                                "the adapted mesh");
+    return refined + coarsened > 0.;
+  }
+
+
+
+  template <int dim>
   std::pair<double, double>
   DiscreteProblem<dim>::adapt_mesh(const Scene<dim>            &scene,
                                    const std::function<void()> &mark_cells,
+                                   const std::string           &remedy,
                                    TimerOutput                 &timer)
   {
     {
@@ -369,7 +403,8 @@ namespace dyncontact
       if (!flagged())
         return {0., 0.};
       triangulation.prepare_coarsening_and_refinement();
-      if (!flagged())
+      // (the memory for the mesh it would make, before it is made)
+      if (!check_flagged_mesh_fits_in_memory(scene, remedy))
         return {0., 0.};
     }
     // (only where the mesh changes: an adaptation that marks no cell

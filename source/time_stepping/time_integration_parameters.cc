@@ -38,8 +38,8 @@ namespace dyncontact
       "damped with the ratio theta omega tau / 2 where omega tau << 1. "
       "Theorem 3.2 and the contact stabilisation hold as for theta = 0 "
       "(doc/algorithms.md); the scheme is of first order in tau for "
-      "theta > 0. 0: the paper's schemes. Not used by the static "
-      "scheme.");
+      "theta > 0. 0: the paper's schemes. Must be 0 with the static "
+      "scheme, which has no time steps to dissipate in.");
     prm.declare_entry("End time",
                       "2.5",
                       Patterns::Double(0.),

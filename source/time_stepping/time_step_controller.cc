@@ -62,6 +62,18 @@ namespace dyncontact
                     ExcMessage("Time integration/Time step tolerance must be "
                                "a finite number > 0; got " +
                                format_number(tolerance) + "."));
+        AssertThrow(end_time == 0. || min_time_step < end_time,
+                    ExcMessage(
+                      "Time integration/Time step = " +
+                      format_number(time_step) +
+                      " s with 'Time step control = adaptive': its Minimum "
+                      "time step (" +
+                      format_number(min_time_step) +
+                      " s) is not below End time = " + format_number(end_time) +
+                      " s, so no step could be cut at a contact event or "
+                      "repeated after an error estimate: the run would be "
+                      "one unchecked step. Choose a Time step (and Minimum "
+                      "time step) below End time."));
         AssertThrow(end_time / min_time_step < 1e9,
                     ExcMessage("Time integration: End time / Minimum time "
                                "step = " +

@@ -9,12 +9,25 @@ namespace dyncontact
 {
   using namespace dealii;
 
+  /// The memory available to a run, and what limits it.
+  struct AvailableMemory
+  {
+    /// bytes, summed over the ranks
+    double bytes;
+    /// the limit that binds on the rank with the least memory
+    std::string limit;
+  };
+
   /**
-   * The memory available to this run in bytes: each node's MemAvailable
-   * (from /proc/meminfo) shared among the ranks on that node, summed over
-   * all ranks of @p comm (collective). Infinite where it cannot be read.
+   * The memory available to this run in bytes, summed over all ranks of
+   * @p comm (collective): on each rank the least of its node's
+   * MemAvailable (from /proc/meminfo) shared among the ranks on that node,
+   * what its address-space limit (ulimit -v) leaves beside its virtual
+   * size, and what its control group's memory limit leaves (cgroup v1 or
+   * v2, shared among the ranks on the node). Infinite where none can be
+   * read.
    */
-  double
+  AvailableMemory
   available_memory(const MPI_Comm comm);
 
   /**
@@ -28,8 +41,11 @@ namespace dyncontact
    * 500 bytes of
    * vectors, DoF and mesh data (1.47 kB in 3D for degree 1, where 1.78 kB
    * were measured at 1e6 DoFs), and 2 kB per coarse cell and rank; the message
-   * names the estimate, the available memory and @p remedy (the parameters
-   * to reduce). Collective.
+   * names the estimate, the available memory (available_memory()), what
+   * limits it, and @p remedy (the parameters to reduce). For a mesh that
+   * grows from @p n_cells_in_use cells (> 0: a mesh the run holds
+   * already), what the growth needs is compared. @p what names the mesh
+   * in the message. Collective.
    */
   void
   check_mesh_fits_in_memory(const double       n_cells,
@@ -38,7 +54,9 @@ namespace dyncontact
                             const bool         stored_step_matrix,
                             const double       n_coarse_cells,
                             const std::string &remedy,
-                            const MPI_Comm     comm);
+                            const MPI_Comm     comm,
+                            const double       n_cells_in_use = 0.,
+                            const std::string &what = "the requested mesh");
 
   /**
    * Hands the memory that the C library keeps after it was freed back to

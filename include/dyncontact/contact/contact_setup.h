@@ -45,6 +45,9 @@ namespace dyncontact
       /// Initial penetration: reject or project an initially
       /// penetrating configuration.
       bool project_initial_penetration = false;
+      /// Whether a contact pair (or the obstacle) without any row at t = 0
+      /// is refused (true) or run with a warning.
+      bool refuse_pair_without_rows = true;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -187,11 +190,30 @@ namespace dyncontact
                       const VectorType                &w_ghosted,
                       const AffineConstraints<double> &constraints);
 
+    /// Records that contact @p pair (its name) has no row at t = 0 for
+    /// @p reason, with @p remedy: refuse_initial_overlap() refuses it (or
+    /// warns, with 'Contact/Pair without rows = warn').
+    void
+    add_pair_without_rows(const std::string &pair,
+                          const std::string &reason,
+                          const std::string &remedy);
+
+    /// The messages of add_pair_without_rows() at the last set-up at t = 0.
+    std::vector<std::string> pairs_without_rows;
+
+    /// The overlap check of refuse_initial_overlap().
+    void
+    refuse_unmatched_overlap(const VectorType &u) const;
+
     /// Stops with a message naming the pair if a slave node without a row
     /// of a pair lies inside that pair's master, the other body or the
     /// rigid obstacle, in the initial state @p u (they overlap at t = 0; a
     /// node with a row is refused or projected by setup() and
-    /// project_initial_penetration()). Collective.
+    /// project_initial_penetration()). Then stops with a message naming
+    /// the first contact pair (or the obstacle) without any row at t = 0
+    /// and why, or warns of each with 'Contact/Pair without rows = warn'
+    /// (after the overlap check: the nodes of overlapping bodies have no
+    /// row either, and that message names the cause). Collective.
   public:
     void
     refuse_initial_overlap(const VectorType &u) const;

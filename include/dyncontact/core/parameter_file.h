@@ -60,11 +60,27 @@ namespace dyncontact
    * its entry's pattern (for a number: its range), naming the line, the
    * entry with its subsections, the value and the values allowed, where
    * @p origins (from expand_includes()) says the line came from. Called
-   * before the text is parsed.
+   * before the text is parsed. Returns the entries the text sets, as
+   * (full name "Subsection/.../Entry", where its line came from), in the
+   * order of the text.
    */
-  void
+  std::vector<std::pair<std::string, std::string>>
   check_for_misplaced_entries(const std::string              &text,
                               const std::vector<std::string> &origins);
+
+  /**
+   * The warnings (lines of text) for the entries of @p set_entries (full
+   * name, where it was set: check_for_misplaced_entries()) that a run does
+   * not read: those of subsection Scene outside @p scene_subsection (the
+   * scene @p scene_name reads its own only), and those that @p unread
+   * names (an entry or a whole subsection, and why), each once.
+   */
+  std::string
+  unread_entry_warnings(
+    const std::vector<std::pair<std::string, std::string>> &set_entries,
+    const std::string                                      &scene_name,
+    const std::string                                      &scene_subsection,
+    const std::vector<std::pair<std::string, std::string>> &unread);
 
   /**
    * The prm text @p text (read from @p source) with a leading UTF-8 byte

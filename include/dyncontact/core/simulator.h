@@ -49,10 +49,14 @@ namespace dyncontact
   {
   public:
     /// Reads every component's parameters from @p prm (already parsed);
-    /// relative file names refer to @p input_directory.
-    Simulator(ParameterHandler  &prm,
-              const std::string &input_directory,
-              const MPI_Comm     comm);
+    /// relative file names refer to @p input_directory. Of @p set_entries
+    /// (the entries the input sets, with where: check_for_misplaced_entries())
+    /// each that this run does not read gets a warning naming it and why.
+    Simulator(
+      ParameterHandler                                       &prm,
+      const std::string                                      &input_directory,
+      const MPI_Comm                                          comm,
+      const std::vector<std::pair<std::string, std::string>> &set_entries = {});
 
     ~Simulator();
 
@@ -61,6 +65,14 @@ namespace dyncontact
     run();
 
   private:
+    /// The warnings of the constructor for the entries of @p set_entries
+    /// that the run does not read (by the scene, the mesh adaptation, the
+    /// output and the statistics chosen).
+    void
+    warn_of_unread_entries(
+      const std::vector<std::pair<std::string, std::string>> &set_entries)
+      const;
+
     void
     run_time_loop();
     /// The initial state and its statistics row (a new run).

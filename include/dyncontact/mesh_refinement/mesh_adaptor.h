@@ -88,6 +88,17 @@ namespace dyncontact
     void
     mark_contact_zone() const;
 
+    /// The entries of subsection Mesh refinement that a run of the static
+    /// problem (@p is_static) or with these settings does not read: (full
+    /// name, why).
+    std::vector<std::pair<std::string, std::string>>
+    unread_entries(const bool is_static) const;
+
+    /// The parameters that a refinement too large for the memory should
+    /// reduce, with their values (for the message).
+    std::string
+    memory_remedy() const;
+
     /// The distance, in m, by which the refined zone is widened: "Front
     /// widening" times the distance the fastest wave, sqrt((lambda + 2 mu) /
     /// rho) of the stiffest body, travels in "Refinement interval" steps of

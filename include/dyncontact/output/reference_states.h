@@ -4,6 +4,8 @@
 #include <dyncontact/core/simulator_access.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace dealii
 {
@@ -23,6 +25,19 @@ namespace dyncontact
   class ReferenceStates : public SimulatorAccess<dim>
   {
   public:
+    /// The entries a run that neither writes nor compares states does not
+    /// read.
+    std::vector<std::pair<std::string, std::string>>
+    unread_entries() const
+    {
+      if (write_states || compare_states)
+        return {};
+      const std::string why = "neither Write states nor Compare with states "
+                              "is true";
+      return {{"Reference solution/Directory", why},
+              {"Reference solution/Interval", why}};
+    }
+
     static void
     declare_parameters(ParameterHandler &prm);
 

@@ -34,6 +34,22 @@ namespace dyncontact
                   const unsigned int step_matrices,
                   const std::function<std::string(const SummaryInput &)>
                     &statistics_lines) const;
+
+    /// Removes an earlier run's summary.txt (collective; rank 0 removes),
+    /// when this run's own files begin: a summary beside this run's
+    /// statistics.tsv is always this run's.
+    void
+    remove_earlier_summary() const;
+
+    /// Writes summary.txt of a run that failed after its files began: that
+    /// it failed, the step and time it had reached, and @p message (rank
+    /// 0; not collective, called while the failure unwinds, and never
+    /// throws).
+    void
+    write_failed_summary(const std::string &message) const noexcept;
+
+    /// The name of the summary in the output directory.
+    static constexpr const char *file_name = "summary.txt";
   };
 } // namespace dyncontact
 

@@ -21,6 +21,16 @@ namespace dyncontact
   class VtuWriter : public SimulatorAccess<dim>
   {
   public:
+    /// The Output entries that a run without VTU files does not read.
+    std::vector<std::pair<std::string, std::string>>
+    unread_entries() const
+    {
+      if (write_vtu)
+        return {};
+      return {{"Output/Compression", "Output/Write vtu = false"},
+              {"Output/Cells per piece", "Output/Write vtu = false"}};
+    }
+
     /// Takes Output/Write vtu, Compression and Cells per piece.
     void
     parse_parameters(const OutputParameters &parameters);

@@ -79,6 +79,9 @@ namespace dyncontact
     initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
 
+    std::vector<std::pair<std::string, std::string>>
+    unread_entries() const override;
+
   private:
     std::string mesh_file;
     double      n_cells = 0.;

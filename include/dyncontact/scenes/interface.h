@@ -68,6 +68,9 @@ namespace dyncontact
     /// Scene/Gmsh/Contact pairs): then Contact/Search radius, the radius of
     /// every other pair, does not override it.
     bool own_search_radius = false;
+    /// Whether the input named this pair's slave (e.g. 'slave : master' in
+    /// Scene/Gmsh/Contact pairs): Contact/Slave side may not override it.
+    bool own_slave_side = false;
   };
 
   template <int dim>
@@ -155,6 +158,13 @@ namespace dyncontact
     {
       return 1;
     }
+
+    /// Entries (or subsections) that the input may set but that this
+    /// scene, as configured, does not read: (full name, why), for the
+    /// warnings before the run. Here: Material of body 2 where no body is
+    /// of it (material_subsections()).
+    virtual std::vector<std::pair<std::string, std::string>>
+    unread_entries() const;
 
     /// The material subsection of each body: by default "Material" for
     /// body 1 and "Material of body 2" for every other.

@@ -103,11 +103,23 @@ namespace dyncontact
     /// udot) and sets up everything anew; returns the energy change of the
     /// transfer and the largest violation of the new K_h that was projected
     /// away. If no cell is marked (on any rank), nothing changes and both
-    /// are zero.
+    /// are zero. A refinement whose growth would not fit into the memory
+    /// available is refused with a message naming @p remedy (the
+    /// parameters to reduce) before the mesh changes.
     std::pair<double, double>
     adapt_mesh(const Scene<dim>            &scene,
                const std::function<void()> &mark_cells,
+               const std::string           &remedy,
                TimerOutput                 &timer);
+
+    /// Stops with a message naming @p remedy if the cells flagged now
+    /// (refined: 2^dim children each; coarsened: 2^dim siblings become one)
+    /// would grow the mesh beyond the memory available to the run
+    /// (check_mesh_fits_in_memory()); returns whether any cell is flagged.
+    /// Collective.
+    bool
+    check_flagged_mesh_fits_in_memory(const Scene<dim>  &scene,
+                                      const std::string &remedy) const;
 
     /// Swaps (u, udot, report) with (u_old, udot_old, initial_report):
     /// after the first step, the initial state (and back).
