@@ -188,7 +188,35 @@ namespace dyncontact
                     w_ghosted,
                     pcout);
     if (several_pairs)
-      keep_nearest_rows();
+      {
+        // a pair that had rows, all of which a nearer master of another pair
+        // took: nothing of it holds its bodies apart at t = 0
+        std::vector<types::global_dof_index> before(pairs.size() + 1, 0);
+        for (const auto &row : rows.rows)
+          ++before[row.pair];
+        Utilities::MPI::sum(before, comm, before);
+        keep_nearest_rows();
+        std::vector<types::global_dof_index> after(pairs.size() + 1, 0);
+        for (const auto &row : rows.rows)
+          ++after[row.pair];
+        Utilities::MPI::sum(after, comm, after);
+        if (kept_slave_sides.empty())
+          for (unsigned int k = 0; k < pairs.size(); ++k)
+            if (before[k] > 0 && after[k] == 0)
+              add_pair_without_rows(
+                "pair " + std::to_string(k + 1) +
+                  (k < side_bodies.size() ?
+                     " (slave body " + side_bodies[k][slave_sides[k]] +
+                       ", master body " + side_bodies[k][1 - slave_sides[k]] +
+                       ")" :
+                     std::string()),
+                "each of its " + std::to_string(before[k]) +
+                  " slave nodes near its master keeps the row of a nearer "
+                  "master of another pair",
+                "Check that the pair's contact tags name the faces that "
+                "meet (a pair whose slave faces look away from its master "
+                "is taken by the other pairs).");
+      }
     if (scene.obstacle() && several_pairs)
       {
         unsigned int n_kept = 0;
