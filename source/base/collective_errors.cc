@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <new>
 #include <sstream>
 
 namespace dyncontact
@@ -36,6 +37,16 @@ namespace dyncontact
     if (const auto *dealii_exception =
           dynamic_cast<const dealii::ExceptionBase *>(&e))
       dealii_exception->print_info(s);
+    else if (dynamic_cast<const std::bad_alloc *>(&e) != nullptr)
+      // (past the memory checks before each mesh: e.g. a solver's or a
+      // library's own allocations)
+      s << "the run ran out of memory (" << e.what()
+        << "): it needed more than the memory available to it, the least "
+           "of the machine's, the process's address-space limit (ulimit -v) "
+           "and its control group's (a batch system's) limit. Reduce the "
+           "mesh (Mesh/Initial global refinements, Mesh refinement/Maximum "
+           "level) or the Polynomial degree, take 'Contact solver/Step "
+           "matrix = matrix-free', or run on more MPI ranks or nodes.";
     else
       s << e.what();
     const std::string text = s.str();
