@@ -26,6 +26,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <tuple>
 
 #include "tests.h"
 
@@ -136,7 +137,8 @@ main(int argc, char **argv)
                                      "subnormal",
                                      "pieces",
                                      "unread",
-                                     "static_viscous"})
+                                     "static_viscous",
+                                     "touch"})
     fs::remove_all(leftover);
 
   // the earlier run whose files must survive every failing case
@@ -188,6 +190,18 @@ main(int argc, char **argv)
       << mesh.substr(0, mesh.rfind('\n', mesh.size() / 2) + 1);
     std::ofstream("no_elements.msh") << mesh.substr(0, mesh.find("$Elements"));
   }
+  // two unit squares, the second moved by (0.5, 0.5): they overlap; or by
+  // (1, 0.5): they touch along x = 1
+  for (const auto &[name, x, y] :
+       std::vector<std::tuple<std::string, double, double>>{
+         {"overlap.msh", 0.5, 0.5}, {"touch.msh", 1., 0.5}})
+    std::ofstream(name) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n"
+                        << "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+                        << "5 " << x << " " << y << " 0\n6 " << x + 1 << " "
+                        << y << " 0\n7 " << x + 1 << " " << y + 1 << " 0\n8 "
+                        << x << " " << y + 1 << " 0\n"
+                        << "$EndNodes\n$Elements\n2\n1 3 2 1 1 1 2 3 4\n"
+                        << "2 3 2 2 2 5 6 7 8\n$EndElements\n";
   std::ofstream("tetrahedron.msh")
     << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
        "2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n"
@@ -351,6 +365,14 @@ main(int argc, char **argv)
                               "    set Initial velocity of body 2 = 1e300, "
                                   "0\n"),
          "Initial velocity of body 2: each component must lie in [-1e+09"},
+    // (until 2026-11-29 run, the bodies passing through each other)
+    {"gmsh",
+         "two bodies in no contact pair that overlap at t = 0",
+         scene_prm("gmsh",
+               "    set Mesh file = overlap.msh\n    set Body 1 tags = 1\n"
+                   "    set Body 2 tags = 2\n"),
+         "bodies 1 and 2 overlap at t = 0 (the point (1, 1) of body 1 lies "
+             "inside body 2), and no contact pair holds them apart"},
     {"gmsh",
          "contact tags on clamped faces",
          gmsh("two_blocks.msh") +
@@ -908,6 +930,17 @@ main(int argc, char **argv)
                    testing::statistics_difference(statistics[0], statistics[1])
                        .first == 0.)
           << "\n";
+  }
+
+  // two bodies in no pair that touch along a side: no overlap
+  {
+    std::ofstream("touch.prm")
+      << base << "set Output directory = touch\n"
+      << scene_prm("gmsh",
+                   "    set Mesh file = touch.msh\n    set Body 1 tags = 1\n"
+                   "    set Body 2 tags = 2\n");
+    log() << "two bodies in no pair that touch along a side run: "
+          << check(run_program("touch.prm").status == 0) << "\n";
   }
 
   // 'Bodies = 1, 2' (a comma for ';'): one body of the two blocks, which

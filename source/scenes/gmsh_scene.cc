@@ -1,5 +1,7 @@
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
@@ -216,6 +218,101 @@ namespace dyncontact
                                  "' has no cells with physical tag " +
                                  std::to_string(tag) + "."));
     }
+
+    /**
+     * Stops with a message if two bodies of @p tria (material ids: bodies)
+     * that no pair of @p paired holds apart overlap: a vertex or a cell
+     * centre of one lies strictly inside a cell of the other (a point on
+     * the other's boundary, where bodies touch, does not count). Checked
+     * on the coarse mesh, which every rank holds whole, where the bodies'
+     * bounding boxes meet; the cells of the finer meshes lie in their
+     * coarse cells.
+     */
+    template <int dim>
+    void
+    refuse_overlap_of_unpaired_bodies(
+      const Triangulation<dim, dim>                         &tria,
+      const unsigned int                                     n_bodies,
+      const std::set<std::pair<unsigned int, unsigned int>> &paired,
+      const std::string                                     &mesh_file)
+    {
+      using Box = BoundingBox<dim>;
+      std::vector<std::vector<typename Triangulation<dim>::cell_iterator>>
+                        cells(n_bodies);
+      std::vector<Box>  body_box(n_bodies);
+      std::vector<bool> has_box(n_bodies, false);
+      for (const auto &cell : tria.cell_iterators_on_level(0))
+        {
+          const unsigned int b = cell->material_id();
+          cells[b].push_back(cell);
+          const Box box = cell->bounding_box();
+          if (has_box[b])
+            body_box[b].merge_with(box);
+          else
+            body_box[b] = box;
+          has_box[b] = true;
+        }
+      const MappingQ<dim> mapping(1);
+      for (unsigned int a = 0; a < n_bodies; ++a)
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          if (a != b && has_box[a] && has_box[b] &&
+              paired.count({std::min(a, b), std::max(a, b)}) == 0 &&
+              body_box[a].get_neighbor_type(body_box[b]) !=
+                NeighborType::not_neighbors)
+            {
+              // the cells of b near a, and the points of a near b
+              std::vector<std::pair<Box, unsigned int>> near;
+              for (unsigned int c = 0; c < cells[b].size(); ++c)
+                if (const Box box = cells[b][c]->bounding_box();
+                    box.get_neighbor_type(body_box[a]) !=
+                    NeighborType::not_neighbors)
+                  near.emplace_back(box, c);
+              for (const auto &cell : cells[a])
+                {
+                  std::vector<Point<dim>> points = {cell->center()};
+                  for (const auto v : cell->vertex_indices())
+                    points.push_back(cell->vertex(v));
+                  for (const Point<dim> &x : points)
+                    for (const auto &[box, c] : near)
+                      {
+                        if (!box.point_inside(x))
+                          continue;
+                        Point<dim> unit;
+                        try
+                          {
+                            unit =
+                              mapping.transform_real_to_unit_cell(cells[b][c],
+                                                                  x);
+                          }
+                        catch (...)
+                          {
+                            continue;
+                          }
+                        bool inside = true;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          inside =
+                            inside && unit[d] > 1e-8 && unit[d] < 1. - 1e-8;
+                        std::ostringstream where;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          where << (d > 0 ? ", " : "") << x[d];
+                        AssertThrow(
+                          !inside,
+                          ExcMessage(
+                            "Mesh file '" + mesh_file + "': bodies " +
+                            std::to_string(a + 1) + " and " +
+                            std::to_string(b + 1) +
+                            " overlap at t = 0 (the point (" + where.str() +
+                            ") of body " + std::to_string(a + 1) +
+                            " lies inside body " + std::to_string(b + 1) +
+                            "), and no contact pair holds them apart: "
+                            "correct the mesh, or pair them in "
+                            "Scene/Gmsh/Contact pairs."));
+                      }
+                }
+            }
+    }
+
+
 
     /**
      * The physical tags of the boundary faces of @p tria (whose material
@@ -726,6 +823,14 @@ namespace dyncontact
     grid_in.read_msh(in);
 
     set_bodies(tria, body_tags, pairs_listed, mesh_file);
+    std::set<std::pair<unsigned int, unsigned int>> paired;
+    for (const BodyPair &pair : pairs)
+      paired.insert(
+        {std::min(pair.slave, pair.master), std::max(pair.slave, pair.master)});
+    refuse_overlap_of_unpaired_bodies(tria,
+                                      body_tags.size(),
+                                      paired,
+                                      mesh_file);
     const auto face_tags =
       boundary_tags(tria, contact_tags, contact_entries, mesh_file);
     require_boundary_tags(face_tags,
