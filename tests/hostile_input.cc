@@ -592,6 +592,19 @@ main(int argc, char **argv)
          "subsection Time integration\n  set Time step = 1e300\n"
              "  set Time step control = adaptive\nend\n",
          "Minimum time step (1.5625e+298 s) is not below End time"},
+    // (until 2026-11-29 blamed on Maximum active-set iterations)
+    {"range",
+         "blocks on the floor at 1e9 m/s (within the range)",
+         scene_prm("gmsh",
+               "    set Mesh file = two_blocks.msh\n"
+                   "    set Bodies = 1; 2\n    set Contact tags = 10, 11; 12\n"
+                   "    set Initial velocities = 0, 0; 0, -1e9\n"
+                   "    set Contact pairs = 1 : obstacle, 2 : 1 : 0.2\n"
+                   "    set Obstacle point = 0, -0.5\n"
+                   "    set Obstacle normal = 0, 1\n") +
+           "subsection Time integration\n  set Time step = 0.0025\nend\n",
+         "times the size of the whole mesh (2.17 m), so that no contact can "
+             "be resolved"},
     // static problems that nothing holds (singular)
     {"static",
          "hertz with Load 0 and a gap",

@@ -165,10 +165,19 @@ namespace dyncontact
                                       p.u,
                                       p.udot);
     }
-    AssertThrow(p.report.converged(),
-                ExcMessage("The initial velocity of " + scheme.name +
-                           " (eq. 12c) could not be computed: " +
-                           p.report.failure() + "."));
+    if (!p.report.converged())
+      {
+        // (a failure whose cause is the data's scale says so)
+        const std::string scale =
+          p.travel_beyond_mesh(time_step_controller.get_timestep());
+        AssertThrow(false,
+                    ExcMessage("The initial velocity of " + scheme.name +
+                               " (eq. 12c) could not be computed: " +
+                               (scale.empty() ?
+                                  p.report.failure() :
+                                  scale + " (" + p.report.failure() + ")") +
+                               "."));
+      }
     p.initial_report = p.report;
     record_statistics();
   }
@@ -315,10 +324,17 @@ namespace dyncontact
   void
   Simulator<dim>::stop_after_failed_step(const bool finite)
   {
-    const StepReport  &report = problem->report;
-    const std::string  cause  = finite && !report.converged() ?
-                                  report.failure() :
-                                  "the solution is not finite";
+    const StepReport &report = problem->report;
+    const std::string scale =
+      problem->travel_beyond_mesh(time_step_controller.get_timestep());
+    const std::string cause =
+      !scale.empty() ? scale + " (" +
+                         (finite && !report.converged() ?
+                            report.failure() :
+                            std::string("the solution is not finite")) +
+                         ")" :
+      finite && !report.converged() ? report.failure() :
+                                      "the solution is not finite";
     std::ostringstream message;
     if (control.get_step() == 0 && !checkpoints.resume())
       {

@@ -12,6 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace dyncontact
 {
@@ -439,6 +442,49 @@ namespace dyncontact
         integrator->restore_constraints(u, contact->get_row_operator());
     }
     return {energy() - energy_before, violation};
+  }
+
+
+
+  template <int dim>
+  std::string
+  DiscreteProblem<dim>::travel_beyond_mesh(const double tau) const
+  {
+    const double speed = udot.linfty_norm();
+    Point<dim>   lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = std::numeric_limits<double>::max();
+        upper[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = std::min(lower[d], cell->vertex(v)[d]);
+              upper[d] = std::max(upper[d], cell->vertex(v)[d]);
+            }
+    double size = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double extent = Utilities::MPI::max(upper[d], comm) +
+                              Utilities::MPI::max(-lower[d], comm);
+        size += extent * extent;
+      }
+    size = std::sqrt(size);
+    if (!(speed * tau > size))
+      return "";
+    std::ostringstream text;
+    text << std::setprecision(3) << "the velocities (up to " << speed
+         << " m/s) move the bodies up to " << speed * tau
+         << " m in one step of " << tau << " s, " << speed * tau / size
+         << " times the size of the whole mesh (" << size
+         << " m), so that no contact can be resolved: check the scene's "
+            "initial velocities (and loads), or lower Time "
+            "integration/Time step; more active-set iterations would not "
+            "help";
+    return text.str();
   }
 
 

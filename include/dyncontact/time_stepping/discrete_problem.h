@@ -121,6 +121,13 @@ namespace dyncontact
     check_flagged_mesh_fits_in_memory(const Scene<dim>  &scene,
                                       const std::string &remedy) const;
 
+    /// If the velocity udot moves a point farther in a step of @p tau than
+    /// the whole mesh is wide, a sentence that says so (for the message of
+    /// a failed solve, whose cause is then the data's scale, not a solver
+    /// limit), else "". Collective.
+    std::string
+    travel_beyond_mesh(const double tau) const;
+
     /// Swaps (u, udot, report) with (u_old, udot_old, initial_report):
     /// after the first step, the initial state (and back).
     void
