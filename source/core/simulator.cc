@@ -132,14 +132,18 @@ namespace dyncontact
         p.get_system().interpolate_initial_values(*scene, p.u, p.udot);
         mesh_adaptor->mark_contact_zone();
         if (!p.check_flagged_mesh_fits_in_memory(*scene,
-                                                 mesh_adaptor->memory_remedy()))
+                                                 mesh_adaptor->memory_remedy(
+                                                   true),
+                                                 "the mesh refined at the "
+                                                 "contact zone"))
           {
             // (nothing more would change)
             pcout << "   warning: Mesh refinement/Initial contact refinements "
                      "= "
                   << mesh_adaptor->n_initial_refinements() << ": "
                   << (k == 0 ? std::string("no cell was refined") :
-                               "only " + std::to_string(k) + " refined cells") +
+                               "only " + std::to_string(k) +
+                                 " of them refined cells") +
                        ": no slave node is in the contact zone at t = 0 "
                        "(its gap below Mesh refinement/Contact zone/Distance "
                        "or two cell sizes), as at the start of an impact "
@@ -281,7 +285,7 @@ namespace dyncontact
     const auto [energy_change, violation] = problem->adapt_mesh(
       *scene,
       [this]() { mesh_adaptor->mark_cells(problem->triangulation); },
-      mesh_adaptor->memory_remedy(),
+      mesh_adaptor->memory_remedy(false),
       *timer);
     mesh_transfer.add(energy_change, violation);
   }

@@ -504,15 +504,21 @@ namespace dyncontact
 
   template <int dim>
   std::string
-  MeshAdaptor<dim>::memory_remedy() const
+  MeshAdaptor<dim>::memory_remedy(const bool initial) const
   {
     std::ostringstream text; // 6 digits
+    if (initial)
+      {
+        text << "Mesh refinement/Initial contact refinements (now "
+             << initial_refinements << ") or Maximum level (now " << max_level
+             << ")";
+        return text.str();
+      }
     text << "Mesh refinement/Maximum level (now " << max_level
          << "), Refine fraction (now " << refine_fraction << ")";
     if (front_widening > 0.)
       text << ", Front widening (now " << front_widening << ")";
-    text << " or Initial contact refinements (now " << initial_refinements
-         << ")";
+    text << ", or raise Refinement interval (now " << interval << ")";
     return text.str();
   }
 

@@ -348,7 +348,8 @@ namespace dyncontact
   bool
   DiscreteProblem<dim>::check_flagged_mesh_fits_in_memory(
     const Scene<dim>  &scene,
-    const std::string &remedy) const
+    const std::string &remedy,
+    const std::string &what) const
   {
     double refined = 0., coarsened = 0.;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -371,7 +372,7 @@ namespace dyncontact
                                 remedy,
                                 comm,
                                 n_cells,
-                                "the adapted mesh");
+                                what);
     return refined + coarsened > 0.;
   }
 

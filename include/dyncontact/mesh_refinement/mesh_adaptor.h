@@ -95,9 +95,10 @@ namespace dyncontact
     unread_entries(const bool is_static) const;
 
     /// The parameters that a refinement too large for the memory should
-    /// reduce, with their values (for the message).
+    /// reduce, with their values (for the message): of the refinements
+    /// during the run, or of the @p initial contact refinements.
     std::string
-    memory_remedy() const;
+    memory_remedy(const bool initial) const;
 
     /// The distance, in m, by which the refined zone is widened: "Front
     /// widening" times the distance the fastest wave, sqrt((lambda + 2 mu) /

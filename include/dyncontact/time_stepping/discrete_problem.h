@@ -112,14 +112,17 @@ namespace dyncontact
                const std::string           &remedy,
                TimerOutput                 &timer);
 
-    /// Stops with a message naming @p remedy if the cells flagged now
+    /// Stops with a message naming @p what (the mesh) and @p remedy if the
+    /// cells flagged now
     /// (refined: 2^dim children each; coarsened: 2^dim siblings become one)
     /// would grow the mesh beyond the memory available to the run
     /// (check_mesh_fits_in_memory()); returns whether any cell is flagged.
     /// Collective.
     bool
-    check_flagged_mesh_fits_in_memory(const Scene<dim>  &scene,
-                                      const std::string &remedy) const;
+    check_flagged_mesh_fits_in_memory(
+      const Scene<dim>  &scene,
+      const std::string &remedy,
+      const std::string &what = "the adapted mesh") const;
 
     /// If the velocity udot moves a point farther in a step of @p tau than
     /// the whole mesh is wide, a sentence that says so (for the message of
