@@ -187,7 +187,11 @@ namespace dyncontact
                     mapping,
                     w_ghosted,
                     pcout);
-    if (several_pairs)
+    // (the counts of the rows per pair only at t = 0, where a pair without
+    // rows is refused: an adaptation's set-up makes no collective calls
+    // for them)
+    const bool at_start = kept_slave_sides.empty();
+    if (several_pairs && at_start)
       {
         // a pair that had rows, all of which a nearer master of another pair
         // took: nothing of it holds its bodies apart at t = 0
@@ -200,23 +204,19 @@ namespace dyncontact
         for (const auto &row : rows.rows)
           ++after[row.pair];
         Utilities::MPI::sum(after, comm, after);
-        if (kept_slave_sides.empty())
-          for (unsigned int k = 0; k < pairs.size(); ++k)
-            if (before[k] > 0 && after[k] == 0)
-              add_pair_without_rows(
-                "pair " + std::to_string(k + 1) +
-                  (k < side_bodies.size() ?
-                     " (slave body " + side_bodies[k][slave_sides[k]] +
-                       ", master body " + side_bodies[k][1 - slave_sides[k]] +
-                       ")" :
-                     std::string()),
-                "each of its " + std::to_string(before[k]) +
-                  " slave nodes near its master keeps the row of a nearer "
-                  "master of another pair",
-                "Check that the pair's contact tags name the faces that "
-                "meet (a pair whose slave faces look away from its master "
-                "is taken by the other pairs).");
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          if (before[k] > 0 && after[k] == 0)
+            add_pair_without_rows(
+              pair_name(k),
+              "each of its " + std::to_string(before[k]) +
+                " slave nodes near its master keeps the row of a nearer "
+                "master of another pair",
+              "Check that the pair's contact tags name the faces that "
+              "meet (a pair whose slave faces look away from its master "
+              "is taken by the other pairs).");
       }
+    else if (several_pairs)
+      keep_nearest_rows();
     if (scene.obstacle() && several_pairs)
       {
         unsigned int n_kept = 0;
@@ -463,12 +463,14 @@ namespace dyncontact
       }
     // (every rank stops, also those without such a node)
     stop_with_any_message(penetration, comm);
+    if (!kept_slave_sides.empty())
+      return; // (a pair without rows is refused at t = 0 only)
     const types::global_dof_index n_nodes =
       Utilities::MPI::sum<types::global_dof_index>(nodes.size(), comm);
     const types::global_dof_index n_rows =
       Utilities::MPI::sum<types::global_dof_index>(rows.size() - n_rows_before,
                                                    comm);
-    if (n_rows == 0 && kept_slave_sides.empty())
+    if (n_rows == 0)
       add_pair_without_rows(
         "pair " + std::to_string(pair_index + 1) + " (the rigid obstacle)",
         n_nodes == 0 ? "no boundary face carries its contact tags" :
@@ -476,6 +478,21 @@ namespace dyncontact
                          " of its slave nodes lie on a Dirichlet boundary",
         "Take the contact tags off the clamped faces, or the clamped faces "
         "out of the Dirichlet tags.");
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactSetup<dim>::pair_name(const unsigned int k) const
+  {
+    if (!several_pairs)
+      return "pair (slave side " + std::to_string(slave_sides[k] + 1) + ")";
+    return "pair " + std::to_string(k + 1) +
+           (k < side_bodies.size() ?
+              " (slave body " + side_bodies[k][slave_sides[k]] +
+                ", master body " + side_bodies[k][1 - slave_sides[k]] + ")" :
+              std::string());
   }
 
 
@@ -574,6 +591,8 @@ namespace dyncontact
     unsigned int n_clamped = 0;
     // (for a pair without rows: slave nodes fixed in every direction, and
     // those that find a master face)
+    // (counted at t = 0 only, where such a pair is refused)
+    const bool              at_start = kept_slave_sides.empty();
     types::global_dof_index n_fixed = 0, n_imaged = 0;
     const std::size_t       n_rows_before = rows.size();
     std::string             penetration;
@@ -581,14 +600,17 @@ namespace dyncontact
       {
         const Point<dim> &x     = node.x;
         const auto        image = phi.find_image(x);
-        bool              fixed = true;
-        for (unsigned int d = 0; d < dim; ++d)
-          fixed = fixed &&
-                  system.get_constraints().is_constrained(node.dofs[d]) &&
-                  system.get_constraints()
-                    .get_constraint_entries(node.dofs[d])
-                    ->empty();
-        n_fixed += fixed;
+        if (at_start)
+          {
+            bool fixed = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              fixed = fixed &&
+                      system.get_constraints().is_constrained(node.dofs[d]) &&
+                      system.get_constraints()
+                        .get_constraint_entries(node.dofs[d])
+                        ->empty();
+            n_fixed += fixed;
+          }
         if (!image)
           {
             unmatched.push_back({x, node.dofs, pair_index});
@@ -637,19 +659,13 @@ namespace dyncontact
                                                    n_fixed,
                                                    n_imaged,
                                                    rows.size() - n_rows_before};
-    Utilities::MPI::sum(counts, comm, counts);
-    if (counts[3] == 0 && kept_slave_sides.empty())
+    if (at_start)
+      Utilities::MPI::sum(counts, comm, counts);
+    if (at_start && counts[3] == 0)
       {
         std::ostringstream radius; // 6 digits
         radius << pair.search_radius;
-        const std::string name =
-          several_pairs ?
-            "pair " + std::to_string(pair_index + 1) +
-              (pair_index < side_bodies.size() ?
-                 " (slave body " + side_bodies[pair_index][slave] +
-                   ", master body " + side_bodies[pair_index][1 - slave] + ")" :
-                 std::string()) :
-            "pair (slave side " + std::to_string(slave + 1) + ")";
+        const std::string name = pair_name(pair_index);
         if (counts[0] == 0)
           add_pair_without_rows(
             name,

@@ -169,19 +169,12 @@ namespace dyncontact
                                       p.u,
                                       p.udot);
     }
-    if (!p.report.converged())
-      {
-        // (a failure whose cause is the data's scale says so)
-        const std::string scale =
-          p.travel_beyond_mesh(time_step_controller.get_timestep());
-        AssertThrow(false,
-                    ExcMessage("The initial velocity of " + scheme.name +
-                               " (eq. 12c) could not be computed: " +
-                               (scale.empty() ?
-                                  p.report.failure() :
-                                  scale + " (" + p.report.failure() + ")") +
-                               "."));
-      }
+    AssertThrow(p.report.converged(),
+                ExcMessage("The initial velocity of " + scheme.name +
+                           " (eq. 12c) could not be computed: " +
+                           p.failure_cause(time_step_controller.get_timestep(),
+                                           p.report.failure()) +
+                           "."));
     p.initial_report = p.report;
     record_statistics();
   }
@@ -329,16 +322,11 @@ namespace dyncontact
   Simulator<dim>::stop_after_failed_step(const bool finite)
   {
     const StepReport &report = problem->report;
-    const std::string scale =
-      problem->travel_beyond_mesh(time_step_controller.get_timestep());
     const std::string cause =
-      !scale.empty() ? scale + " (" +
-                         (finite && !report.converged() ?
-                            report.failure() :
-                            std::string("the solution is not finite")) +
-                         ")" :
-      finite && !report.converged() ? report.failure() :
-                                      "the solution is not finite";
+      problem->failure_cause(time_step_controller.get_timestep(),
+                             finite && !report.converged() ?
+                               report.failure() :
+                               "the solution is not finite");
     std::ostringstream message;
     if (control.get_step() == 0 && !checkpoints.resume())
       {

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <dyncontact/base/memory_check.h>
 #include <dyncontact/base/triangulation.h>
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -449,33 +449,15 @@ namespace dyncontact
 
   template <int dim>
   std::string
-  DiscreteProblem<dim>::travel_beyond_mesh(const double tau) const
+  DiscreteProblem<dim>::failure_cause(const double       tau,
+                                      const std::string &failure) const
   {
     const double speed = udot.linfty_norm();
-    Point<dim>   lower, upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] = std::numeric_limits<double>::max();
-        upper[d] = -std::numeric_limits<double>::max();
-      }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto v : cell->vertex_indices())
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] = std::min(lower[d], cell->vertex(v)[d]);
-              upper[d] = std::max(upper[d], cell->vertex(v)[d]);
-            }
-    double size = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double extent = Utilities::MPI::max(upper[d], comm) +
-                              Utilities::MPI::max(-lower[d], comm);
-        size += extent * extent;
-      }
-    size = std::sqrt(size);
+    const auto   box   = GridTools::compute_bounding_box(triangulation);
+    const double size  = box.get_boundary_points().first.distance(
+      box.get_boundary_points().second);
     if (!(speed * tau > size))
-      return "";
+      return failure;
     std::ostringstream text;
     text << std::setprecision(3) << "the velocities (up to " << speed
          << " m/s) move the bodies up to " << speed * tau
@@ -484,7 +466,8 @@ namespace dyncontact
          << " m), so that no contact can be resolved: check the scene's "
             "initial velocities (and loads), or lower Time "
             "integration/Time step; more active-set iterations would not "
-            "help";
+            "help ("
+         << failure << ")";
     return text.str();
   }
 

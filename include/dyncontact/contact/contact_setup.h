@@ -198,6 +198,12 @@ namespace dyncontact
                           const std::string &reason,
                           const std::string &remedy);
 
+    /// "pair k (slave body a, master body b)" of the two-body pair
+    /// @p pair_index (without the bodies in a scene of one pair), for the
+    /// messages.
+    std::string
+    pair_name(const unsigned int pair_index) const;
+
     /// The messages of add_pair_without_rows() at the last set-up at t = 0.
     std::vector<std::string> pairs_without_rows;
 

@@ -124,12 +124,13 @@ namespace dyncontact
       const std::string &remedy,
       const std::string &what = "the adapted mesh") const;
 
-    /// If the velocity udot moves a point farther in a step of @p tau than
-    /// the whole mesh is wide, a sentence that says so (for the message of
-    /// a failed solve, whose cause is then the data's scale, not a solver
-    /// limit), else "". Collective.
+    /// The cause of a failed solve for its message: @p failure (the
+    /// solver's word), after a sentence that says so if the velocity udot
+    /// moves a point farther in a step of @p tau than the whole mesh is
+    /// wide (the cause is then the data's scale, not a solver limit).
+    /// Collective.
     std::string
-    travel_beyond_mesh(const double tau) const;
+    failure_cause(const double tau, const std::string &failure) const;
 
     /// Swaps (u, udot, report) with (u_old, udot_old, initial_report):
     /// after the first step, the initial state (and back).
