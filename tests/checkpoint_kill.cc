@@ -6,10 +6,59 @@
 // resumed with 'Resume = true' it completes, and its statistics.tsv ends
 // exactly as an uninterrupted run's (final energy and momentum to 1e-10).
 // The folders of an earlier run of the test are removed first.
+//
+// A run on 2 ranks whose mpirun (and its process group) is killed with
+// kill -9 leaves no rank running: Open MPI gives each rank a process group
+// of its own, and without the program's own care they ran on for about a
+// second. Both ranks must be gone (or zombies) within 0.5 s.
 
+#include <signal.h>
+
+#include <chrono>
 #include <filesystem>
+#include <thread>
 
 #include "tests.h"
+
+
+namespace
+{
+  /// The processes whose parent is @p parent (from /proc).
+  std::vector<int>
+  children_of(const int parent)
+  {
+    std::vector<int> children;
+    for (const auto &entry : std::filesystem::directory_iterator("/proc"))
+      {
+        std::ifstream stat(entry.path() / "stat");
+        std::string   line;
+        if (!std::getline(stat, line) || line.rfind(')') == std::string::npos)
+          continue;
+        // pid (comm) state ppid ...: comm may hold blanks
+        std::istringstream rest(line.substr(line.rfind(')') + 1));
+        char               state;
+        int                ppid;
+        if (rest >> state >> ppid && ppid == parent)
+          children.push_back(std::stoi(entry.path().filename()));
+      }
+    return children;
+  }
+
+  /// Whether @p pid runs (exists and is no zombie).
+  bool
+  is_running(const int pid)
+  {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string   line;
+    if (!std::getline(stat, line) || line.rfind(')') == std::string::npos)
+      return false;
+    std::istringstream rest(line.substr(line.rfind(')') + 1));
+    char               state = 'Z';
+    rest >> state;
+    return state != 'Z' && state != 'X';
+  }
+} // namespace
+
 
 
 int
@@ -57,4 +106,48 @@ main(int argc, char **argv)
     same = same && std::abs(a[c] - b[c]) <= 1e-10 * std::abs(a[c]) + 1e-14;
   log() << "final step, energies and momentum as uninterrupted: " << check(same)
         << "\n";
+
+  // the ranks of a killed mpirun
+  std::ofstream("ranks.prm") << bar_prm(2, "N-CS++", 160, 1. / 320., 1000.) +
+                                  "set Output directory = results-ranks\n" +
+                                  "subsection Checkpointing\n"
+                                  "  set Interval in steps = 20\nend\n";
+  std::filesystem::remove_all("results-ranks");
+  std::filesystem::remove("mpirun.pid");
+  run_clean("sh -c 'setsid " + std::string(DYNCONTACT_MPIEXEC) + " -np 2 " +
+            exe + " ranks.prm > ranks.log 2>&1 & echo $! > mpirun.pid'");
+  int launcher = 0;
+  std::ifstream("mpirun.pid") >> launcher;
+  std::vector<int> ranks;
+  for (unsigned int i = 0; i < 2400 && launcher > 0; ++i)
+    {
+      ranks = children_of(launcher);
+      if (ranks.size() == 2 &&
+          std::filesystem::exists("results-ranks/checkpoints/last"))
+        break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  const bool started = launcher > 0 && ranks.size() == 2;
+  if (launcher > 0)
+    kill(-launcher, SIGKILL);
+  const auto killed  = std::chrono::steady_clock::now();
+  bool       running = true;
+  while (running &&
+         std::chrono::steady_clock::now() - killed < std::chrono::seconds(5))
+    {
+      running = false;
+      for (const int rank : ranks)
+        running = running || is_running(rank);
+      if (running)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - killed)
+      .count();
+  for (const int rank : ranks)
+    if (is_running(rank))
+      kill(rank, SIGKILL);
+  log() << "the 2 ranks of a killed mpirun end within 0.5 s: "
+        << check(started && !running && seconds < 0.5) << "\n";
+  std::cout << "ranks ended " << seconds << " s after the kill" << std::endl;
 }

@@ -5,6 +5,11 @@
 #include <dyncontact/core/run.h>
 #include <dyncontact/core/simulator.h>
 
+#include <sys/prctl.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -56,9 +61,34 @@ namespace dyncontact
 
 
 
+  namespace
+  {
+    /**
+     * A rank that mpirun started dies with it: Open MPI puts each rank in a
+     * process group of its own, so that a kill -9 of mpirun (or of its
+     * process group) leaves the ranks running until they miss it, about a
+     * second later, long enough to write a step's files after the run was
+     * killed. Linux sends them SIGKILL when their parent, mpirun, ends. (A
+     * rank whose parent ended while this was set has been given to another
+     * process: it ends itself.)
+     */
+    void
+    die_with_mpirun()
+    {
+      if (std::getenv("OMPI_COMM_WORLD_RANK") == nullptr)
+        return;
+      const pid_t launcher = getppid();
+      if (prctl(PR_SET_PDEATHSIG, SIGKILL) == 0 && getppid() != launcher)
+        std::_Exit(1);
+    }
+  } // namespace
+
+
+
   int
   main_program(int argc, char **argv)
   {
+    die_with_mpirun();
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     const std::string usage =
