@@ -391,6 +391,20 @@ main(int argc, char **argv)
          scene_prm("two bars") +
            "subsection Contact\n  set Search radius = 0.01\nend\n",
          "lies within the search radius (0.01 m) of a master face"},
+    // (until 2026-11-29 refused as bodies that overlap "0.55 m inside the
+    // other body", with advice pointing the wrong way)
+    {"contact",
+         "Gmsh: the master's contact tag on its far face",
+         testing::scene_prm("gmsh",
+                            "    set Mesh file = two_blocks.msh\n"
+                            "    set Bodies = 1; 2\n"
+                            "    set Dirichlet tags = 10\n"
+                            "    set Contact tags = 10; 12\n"
+                            "    set Contact pairs = 2 : 1\n") +
+           "subsection Contact\n  set Search radius = 0.2\nend\n",
+         "name faces on its far side, which look away from the slave: the "
+             "slave node at (0.7, 0.05) lies 0.55 m behind the nearest master "
+             "face"},
     // damaged checkpoints
     {"checkpoint",
          "truncated data file",

@@ -2,7 +2,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <dyncontact/base/collective_errors.h>
+#include <dyncontact/base/input_checks.h>
 #include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/scenes/body_overlap.h>
 
 #include <algorithm>
 #include <array>
@@ -140,6 +142,7 @@ namespace dyncontact
     unmatched.clear();
     master_surfaces.clear();
     pairs_without_rows.clear();
+    coarse_mesh                = &system.get_dof_handler().get_triangulation();
     locally_owned              = system.locally_owned_dofs();
     locally_relevant           = system.locally_relevant_dofs();
     const VectorType w_ghosted = system.ghosted(system.get_boundary_weights());
@@ -655,10 +658,11 @@ namespace dyncontact
     // (every rank stops, also those without such a node)
     stop_with_any_message(penetration, comm);
     refuse_clamped_slave_nodes(n_clamped, pair_index, slave, comm);
-    std::vector<types::global_dof_index> counts = {nodes.size(),
-                                                   n_fixed,
-                                                   n_imaged,
-                                                   rows.size() - n_rows_before};
+    std::vector<types::global_dof_index> counts = {
+      static_cast<types::global_dof_index>(nodes.size()),
+      n_fixed,
+      n_imaged,
+      static_cast<types::global_dof_index>(rows.size() - n_rows_before)};
     if (at_start)
       Utilities::MPI::sum(counts, comm, counts);
     if (at_start && counts[3] == 0)
@@ -866,23 +870,48 @@ namespace dyncontact
                            "configuration, so that 'Contact/Initial "
                            "penetration = project' did not move it out. "
                            "Correct the mesh or the initial displacement."));
-    AssertThrow(deepest.pair >= search_radii.size() ||
-                  deepest.depth <= 1e-10 * search_radius(deepest.pair),
+    if (deepest.pair >= search_radii.size() ||
+        deepest.depth <= 1e-10 * search_radius(deepest.pair))
+      return;
+    const std::string node = "the slave node at (" + where.str() + ") lies " +
+                             format_number(deepest.depth) + " m ";
+    const std::string no_row =
+      deepest.nearer_master ?
+        std::string("It kept the row of a master of another pair, nearer in "
+                    "the reference configuration, so that no row of this "
+                    "pair could reject or project it.") :
+        "It lies farther than the pair's search radius (" +
+          format_number(search_radius(deepest.pair)) +
+          " m: Contact/Search radius, or the pair's own) from the master "
+          "surface, so that it got no row that could reject or project it.";
+    // (the scenes whose pairs can overlap start undisplaced: the node's
+    // reference position is where it is at t = 0)
+    const std::optional<bool> inside =
+      coarse_mesh ? inside_a_body(*coarse_mesh, deepest.position) :
+                    std::optional<bool>();
+    AssertThrow(inside.value_or(true),
+                ExcMessage(
+                  "The master's contact tags of contact pair " + pair +
+                  " name faces on its far side, which look away from the "
+                  "slave: " +
+                  node +
+                  "behind the nearest master face (on the side its outward "
+                  "normal points away from), but inside no body at t = 0. "
+                  "Tag the faces of the master that meet the slave (its "
+                  "contact tags, e.g. Scene/Gmsh/Contact tags)."));
+    AssertThrow(!inside.has_value(),
+                ExcMessage("The bodies overlap at t = 0 (contact pair " + pair +
+                           "): the slave node at (" + where.str() +
+                           ") lies inside the other body (" +
+                           format_number(deepest.depth) +
+                           " m behind the nearest face of the master "
+                           "surface). " +
+                           no_row +
+                           " Correct the mesh or the initial displacement."));
+    AssertThrow(false,
                 ExcMessage(
                   "The bodies overlap at t = 0 (contact pair " + pair +
-                  "): the slave node at (" + where.str() + ") lies " +
-                  Utilities::to_string(deepest.depth) +
-                  " m inside the other body, " +
-                  (deepest.nearer_master ?
-                     std::string("and kept the row of a master of another "
-                                 "pair, nearer in the reference "
-                                 "configuration, so that no row of this "
-                                 "pair could reject or project it.") :
-                     "farther than the pair's search radius (" +
-                       Utilities::to_string(search_radius(deepest.pair)) +
-                       " m: Contact/Search radius, or the pair's own) from "
-                       "the master surface, so that it got no row that "
-                       "could reject or project it.") +
+                  "): " + node + "inside the other body. " + no_row +
                   " (It lies behind the nearest master face, on the side "
                   "its outward normal points away from.) Correct the mesh "
                   "or the initial displacement; or, if the bodies do not "

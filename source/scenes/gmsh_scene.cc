@@ -1,12 +1,12 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
 #include <dyncontact/base/checksum.h>
 #include <dyncontact/base/input_checks.h>
+#include <dyncontact/scenes/body_overlap.h>
 #include <dyncontact/scenes/gmsh_scene.h>
 #include <dyncontact/scenes/msh_check.h>
 
@@ -252,7 +252,6 @@ namespace dyncontact
             body_box[b] = box;
           has_box[b] = true;
         }
-      const MappingQ<dim> mapping(1);
       for (unsigned int a = 0; a < n_bodies; ++a)
         for (unsigned int b = 0; b < n_bodies; ++b)
           if (a != b && has_box[a] && has_box[b] &&
@@ -261,53 +260,36 @@ namespace dyncontact
                 NeighborType::not_neighbors)
             {
               // the cells of b near a, and the points of a near b
-              std::vector<std::pair<Box, unsigned int>> near;
+              std::vector<unsigned int> near;
               for (unsigned int c = 0; c < cells[b].size(); ++c)
-                if (const Box box = cells[b][c]->bounding_box();
-                    box.get_neighbor_type(body_box[a]) !=
-                    NeighborType::not_neighbors)
-                  near.emplace_back(box, c);
+                if (cells[b][c]->bounding_box().get_neighbor_type(
+                      body_box[a]) != NeighborType::not_neighbors)
+                  near.push_back(c);
               for (const auto &cell : cells[a])
                 {
                   std::vector<Point<dim>> points = {cell->center()};
                   for (const auto v : cell->vertex_indices())
                     points.push_back(cell->vertex(v));
                   for (const Point<dim> &x : points)
-                    for (const auto &[box, c] : near)
-                      {
-                        if (!box.point_inside(x))
-                          continue;
-                        Point<dim> unit;
-                        try
-                          {
-                            unit =
-                              mapping.transform_real_to_unit_cell(cells[b][c],
-                                                                  x);
-                          }
-                        catch (...)
-                          {
-                            continue;
-                          }
-                        bool inside = true;
-                        for (unsigned int d = 0; d < dim; ++d)
-                          inside =
-                            inside && unit[d] > 1e-8 && unit[d] < 1. - 1e-8;
-                        std::ostringstream where;
-                        for (unsigned int d = 0; d < dim; ++d)
-                          where << (d > 0 ? ", " : "") << x[d];
-                        AssertThrow(
-                          !inside,
-                          ExcMessage(
-                            "Mesh file '" + mesh_file + "': bodies " +
-                            std::to_string(a + 1) + " and " +
-                            std::to_string(b + 1) +
-                            " overlap at t = 0 (the point (" + where.str() +
-                            ") of body " + std::to_string(a + 1) +
-                            " lies inside body " + std::to_string(b + 1) +
-                            "), and no contact pair holds them apart: "
-                            "correct the mesh, or pair them in "
-                            "Scene/Gmsh/Contact pairs."));
-                      }
+                    for (const unsigned int c : near)
+                      if (strictly_inside<dim>(cells[b][c], x))
+                        {
+                          std::ostringstream where;
+                          for (unsigned int d = 0; d < dim; ++d)
+                            where << (d > 0 ? ", " : "") << x[d];
+                          AssertThrow(
+                            false,
+                            ExcMessage(
+                              "Mesh file '" + mesh_file + "': bodies " +
+                              std::to_string(a + 1) + " and " +
+                              std::to_string(b + 1) +
+                              " overlap at t = 0 (the point (" + where.str() +
+                              ") of body " + std::to_string(a + 1) +
+                              " lies inside body " + std::to_string(b + 1) +
+                              "), and no contact pair holds them apart: "
+                              "correct the mesh, or pair them in "
+                              "Scene/Gmsh/Contact pairs."));
+                        }
                 }
             }
     }

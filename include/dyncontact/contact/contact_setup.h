@@ -264,8 +264,11 @@ namespace dyncontact
       bool nearer_master = false;
     };
 
-    const Parameters           parameters;
-    const MPI_Comm             comm;
+    const Parameters parameters;
+    const MPI_Comm   comm;
+    /// The mesh of the last set-up, whose coarse cells tell whether a
+    /// point lies inside a body (refuse_unmatched_overlap()).
+    const Triangulation<dim>  *coarse_mesh = nullptr;
     ContactRows                rows;
     types::global_dof_index    n_global_row_count = 0;
     std::vector<UnmatchedNode> unmatched;
