@@ -83,6 +83,7 @@ namespace dyncontact
                                   const MPI_Comm    comm)
     : parameters(parameters)
     , comm(comm)
+    , unpaired_bodies(comm)
     , row_operator(comm)
   {}
 
@@ -248,6 +249,7 @@ namespace dyncontact
       master_surfaces.clear();
 
     row_operator.reinit(locally_owned, locally_relevant, rows);
+    unpaired_bodies.setup(pairs, scene.n_bodies(), system, mapping);
 
     double measure = 0.;
     for (const auto &row : rows.rows)

@@ -65,10 +65,13 @@ namespace dyncontact
     class Contact : public Interface<dim>
     {
     public:
+      /// (Also in a scene of bodies without a contact pair: the column
+      /// max_penetration shows whether they pass into each other.)
       bool
       applies() const override
       {
-        return this->get_scene().has_contact();
+        return this->get_scene().has_contact() ||
+               this->get_scene().n_bodies() > 1;
       }
 
       /// The contact intervals (dynamic) or the contact zone (static), the
@@ -196,12 +199,42 @@ namespace dyncontact
                     << std::endl;
               }
           }
+        const auto overlap = this->get_contact().get_unpaired_bodies().deepest(
+          this->get_solution());
+        if (overlap.depth > 0.)
+          {
+            max_penetration = std::max(max_penetration, overlap.depth);
+            ++n_overlap_warnings;
+            if (n_overlap_warnings <= 3)
+              {
+                auto &out = this->get_pcout();
+                out << std::setprecision(3) << "   warning: step "
+                    << this->get_control().get_step()
+                    << " (t = " << this->get_control().get_time()
+                    << " s): bodies " << overlap.body + 1 << " and "
+                    << overlap.other + 1
+                    << ", which no contact pair holds apart, pass into each "
+                       "other: the boundary node of body "
+                    << overlap.body + 1 << " at (";
+                for (unsigned int d = 0; d < dim; ++d)
+                  out << (d > 0 ? ", " : "") << overlap.position[d];
+                out << ") of the mesh lies " << overlap.depth
+                    << " m inside body " << overlap.other + 1
+                    << ". Pair them (e.g. in Scene/Gmsh/Contact pairs)."
+                    << (n_overlap_warnings == 3 ?
+                          " (Further such warnings are not printed; see the "
+                          "column max_penetration.)" :
+                          "")
+                    << std::endl;
+              }
+          }
         row.insert(row.end(),
                    {n_active, measure, force, max_pressure, max_penetration});
       }
 
     private:
-      unsigned int n_warnings = 0;
+      unsigned int n_warnings         = 0;
+      unsigned int n_overlap_warnings = 0;
     };
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Contact,

@@ -8,6 +8,7 @@
 #include <dyncontact/contact/contact_mapping.h>
 #include <dyncontact/contact/contact_rows.h>
 #include <dyncontact/contact/contact_search.h>
+#include <dyncontact/contact/unpaired_bodies.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/scenes/interface.h>
 
@@ -125,6 +126,14 @@ namespace dyncontact
      */
     Penetration
     unmatched_penetration(const VectorType &u) const;
+
+    /// The watch over the bodies that no contact pair holds apart (set up
+    /// with the rows).
+    const UnpairedBodies<dim> &
+    get_unpaired_bodies() const
+    {
+      return unpaired_bodies;
+    }
 
     /// The number of contact rows over all ranks (get_rows() holds this
     /// rank's).
@@ -264,8 +273,9 @@ namespace dyncontact
       bool nearer_master = false;
     };
 
-    const Parameters parameters;
-    const MPI_Comm   comm;
+    const Parameters    parameters;
+    const MPI_Comm      comm;
+    UnpairedBodies<dim> unpaired_bodies;
     /// The mesh of the last set-up, whose coarse cells tell whether a
     /// point lies inside a body (refuse_unmatched_overlap()).
     const Triangulation<dim>  *coarse_mesh = nullptr;
