@@ -2,7 +2,11 @@
 // with a non-zero exit status and a message that names the parameter and the
 // allowed range (or the file), and no backtrace. Also: without an argument
 // and with --help the program prints every parameter with its documentation
-// and exits with status 0.
+// and exits with status 0. The cases of bad entries run the executable's
+// code in this process (testing::run_in_process(): run_command_line(), what
+// main() runs once MPI has started), a start of the executable costing
+// about a second each; a missing file, a directory, the valid input, no
+// argument and --help start the executable itself.
 
 #include <filesystem>
 
@@ -11,6 +15,7 @@
 namespace
 {
   using testing::Outcome;
+  using testing::run_in_process;
   using testing::run_program;
 
   const std::string valid = "set Dimension = 2\n"
@@ -128,7 +133,7 @@ main(int argc, char **argv)
     {
       const std::string file = name + ".prm";
       std::ofstream(file) << valid << text;
-      const Outcome outcome = run_program(file);
+      const Outcome outcome = run_in_process(file);
       const bool clean = error_names(outcome, "") && without_backtrace(outcome);
       log() << name << ": exit status non-zero: " << check(outcome.status != 0)
             << ", clean message: " << check(clean) << "\n"

@@ -2,12 +2,19 @@
 // meshes the program cannot use, damaged checkpoints, meshes too large for
 // the machine, data outside physical ranges, static problems that nothing
 // holds (singular: the message names the free body), incompatible options, a
-// locked output directory. Every case runs the dyncontact executable with the
+// locked output directory. Every case runs the program with the
 // output directory of an earlier, successful run and must
 //  - exit with a non-zero status,
 //  - print "dyncontact: error:" with a message that names the parameter or
 //    file (a fragment of it is checked), and no backtrace,
 //  - leave the earlier run's statistics.tsv as it was, and no lock file.
+// The cases, the earlier run and the checkpointed runs they resume run the
+// executable's code in this process (testing::run_in_process():
+// run_command_line(), what main() runs once MPI has started; a start of the
+// executable costs about a second, and there are 94 cases), before the
+// first start of the executable (whose end removes this process's Open MPI
+// session directory, which MPI-IO needs); the exit status is the one that
+// main() would return. The runs after them start the executable itself.
 // The messages themselves are not printed (some hold machine-dependent
 // figures such as the memory available). Then a few inputs that must run:
 // a byte-order mark, a stale lock of a killed run, a viscosity so large
@@ -34,6 +41,7 @@ namespace
 {
   namespace fs = std::filesystem;
   using testing::Outcome;
+  using testing::run_in_process;
   using testing::run_program;
 
   const std::string base = "set Dimension = 2\n"
@@ -144,7 +152,7 @@ main(int argc, char **argv)
   // the earlier run whose files must survive every failing case
   std::ofstream("previous.prm") << base;
   log() << "earlier run: exit status zero: "
-        << check(run_program("previous.prm").status == 0) << "\n";
+        << check(run_in_process("previous.prm").status == 0) << "\n";
   const std::string previous = read("previous/statistics.tsv");
 
   // files for the cases
@@ -218,7 +226,7 @@ main(int argc, char **argv)
     << base << "set Output directory = ck\n"
     << "subsection Checkpointing\n  set Interval in steps = 2\nend\n";
   log() << "checkpointed run: exit status zero: "
-        << check(run_program("checkpointed.prm").status == 0) << "\n";
+        << check(run_in_process("checkpointed.prm").status == 0) << "\n";
   const std::string ck_step =
     "ck/checkpoints/" + read("ck/checkpoints/last")
                           .substr(0, read("ck/checkpoints/last").find('\n'));
@@ -238,7 +246,7 @@ main(int argc, char **argv)
     "subsection Checkpointing\n  set Interval in steps = 1\nend\n";
   std::ofstream("gmsh_ck.prm") << gmsh_ck;
   log() << "checkpointed Gmsh run: exit status zero: "
-        << check(run_program("gmsh_ck.prm").status == 0) << "\n";
+        << check(run_in_process("gmsh_ck.prm").status == 0) << "\n";
 
   struct Case
   {
@@ -396,7 +404,7 @@ main(int argc, char **argv)
     {"contact",
          "Gmsh: the master's contact tag on its far face",
          testing::scene_prm("gmsh",
-                            "    set Mesh file = two_blocks.msh\n"
+                        "    set Mesh file = two_blocks.msh\n"
                             "    set Bodies = 1; 2\n"
                             "    set Dirichlet tags = 10\n"
                             "    set Contact tags = 10; 12\n"
@@ -745,7 +753,7 @@ main(int argc, char **argv)
       const std::string before     = read(statistics);
 
       std::ofstream("case.prm") << base << c.prm;
-      const Outcome outcome = run_program("case.prm");
+      const Outcome outcome = run_in_process("case.prm");
       const bool    named   = error_names(outcome, c.expected);
       const bool    clean =
         without_backtrace(outcome) &&
@@ -904,7 +912,8 @@ main(int argc, char **argv)
   // mesh adaptations that would outgrow the memory: a front widening of
   // 100 with an adaptation every step grows the bar from 160 cells to
   // millions within 8 steps (5 GB). Under an address-space limit (ulimit
-  // -v) of 3 GB the check before each refinement stops the run with a
+  // -v) of 1.5 GB (the program's own address space is about 0.9 GB) the
+  // check before each refinement stops the run with a
   // message naming the limit and the parameters (not a bare bad_alloc);
   // the statistics of the steps before are intact and the summary says
   // that the run failed
@@ -915,9 +924,9 @@ main(int argc, char **argv)
       << "subsection Time integration\n  set End time = 0.15\nend\n"
       << "subsection Mesh refinement\n  set Refinement interval = 1\n"
       << "  set Front widening = 100\nend\n";
-    const Outcome grown = run_program("grown.prm", "ulimit -v 3000000; ");
+    const Outcome grown = run_program("grown.prm", "ulimit -v 1500000; ");
     const auto    steps = column_values("grown/statistics.tsv", "step");
-    log() << "adaptations past an address-space limit of 3 GB: stopped with "
+    log() << "adaptations past an address-space limit of 1.5 GB: stopped with "
              "a message naming the limit and the parameters ("
           << check(grown.status != 0 && without_backtrace(grown) &&
                    error_names(grown, "the adapted mesh would have") &&

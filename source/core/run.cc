@@ -90,6 +90,14 @@ namespace dyncontact
   {
     die_with_mpirun();
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    return run_command_line(argc, argv);
+  }
+
+
+
+  int
+  run_command_line(int argc, char **argv)
+  {
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     const std::string usage =
       "Usage: dyncontact [--help] input.prm\n"

@@ -27,6 +27,14 @@ namespace dyncontact
   /// The program: dyncontact [--help] file.prm. Returns the exit status.
   int
   main_program(int argc, char **argv);
+
+  /// The program once MPI runs (main_program() starts MPI, then calls
+  /// this): the help, or the run of the parameter file argv[1] on
+  /// MPI_COMM_WORLD, with "dyncontact: error: ..." on std::cerr if it
+  /// fails. Returns the exit status. (The tests call it in their own
+  /// process, for the many inputs that must be refused.)
+  int
+  run_command_line(int argc, char **argv);
 } // namespace dyncontact
 
 #endif
