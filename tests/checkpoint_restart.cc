@@ -65,7 +65,8 @@ main(int argc, char **argv)
              102,
              40,
              1. / 160.,
-             false},
+             false,
+             1.25},
         Case{"adaptive bar chain, no change at the split",
              "chain",
              chain,
@@ -74,7 +75,7 @@ main(int argc, char **argv)
              10,
              0.0125,
              false,
-             5.}})
+             3.}})
     {
       auto prm =
         [&](const std::string &run, const double end, const bool resume) {

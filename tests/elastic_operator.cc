@@ -42,7 +42,10 @@ check(const unsigned int degree)
   prm.parse_input_from_string(
     "set Polynomial degree = " + std::to_string(degree) +
     "\n"
-    "subsection Scene\n  set Name = two bars\nend\n"
+    "subsection Scene\n  set Name = two bars\n"
+    // (8 cells along, 2 across: the forms agree on any mesh)
+    "  subsection Two bars\n    set Cells along length = 8\n"
+    "    set Height = 0.25\n  end\nend\n"
     "subsection Material\n  set Young's modulus = 2\n"
     "  set Poisson's ratio = 0.3\n  set Density = 3\n"
     "  set Viscous shear modulus = 0.5\n  set Viscous Lame parameter = 0.2\n"

@@ -23,6 +23,7 @@ main(int argc, char **argv)
 
   const double       tau = 1. / 128.;
   const unsigned int n   = 8;
+  std::string        checks;
   for (const int widening : {1, 0})
     {
       const std::string directory = "results-front-" + std::to_string(widening);
@@ -52,10 +53,13 @@ main(int argc, char **argv)
       if (widening == 1)
         log() << "  fewer DoFs on average than the uniform finest mesh: "
               << check(mean_of(s.column("dofs")) < 65. * 9. * 2.) << "\n";
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        log() << "  "
-              << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
-                           "/check_front.py " + directory + " 2 0.1 1 1 0.25 " +
-                           (widening == 1 ? "inside" : "leaves"));
+      checks += std::string(checks.empty() ? "" : " --next ") + SOURCE_DIR +
+                "/check_front.py " + directory + " 2 0.1 1 1 0.25 " +
+                (widening == 1 ? "inside" : "leaves");
     }
+  // (in one pvpython: each start takes seconds)
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    log() << "ParaView (check_front.py, Front widening = 1, then 0):\n"
+          << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
+                       "/run_checks.py " + checks);
 }

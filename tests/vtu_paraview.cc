@@ -31,6 +31,14 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace testing;
+  // the ParaView checks of all runs, in one pvpython at the end (each start
+  // of pvpython takes seconds)
+  std::string checks;
+  const auto  add_check = [&](const std::string &script,
+                             const std::string &directory) {
+    checks += std::string(checks.empty() ? "" : " --next ") + SOURCE_DIR + "/" +
+              script + " " + directory;
+  };
 
   // (ranks, cells per VTU piece): one piece per rank, then 3 pieces of at
   // most 30 of the 80 cells on each of 2 ranks
@@ -58,8 +66,7 @@ main(int argc, char **argv)
             << check(run_output.find("command failed") == std::string::npos)
             << ", pieces in the last record: "
             << count_pieces(directory + "/solution_00050.pvtu") << "\n";
-      log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
-                         "/check_vtu.py " + directory);
+      add_check("check_vtu.py", directory);
     }
 
   // ranks with different numbers of pieces (3 cells on 2 ranks, one cell
@@ -78,8 +85,7 @@ main(int argc, char **argv)
                                DYNCONTACT_EXECUTABLE + " " + directory + ".prm")
                        .find("command failed") == std::string::npos)
             << "\n";
-      log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
-                         "/check_pieces.py " + directory);
+      add_check("check_pieces.py", directory);
     }
 
   std::ofstream("two-bars.prm")
@@ -93,6 +99,8 @@ main(int argc, char **argv)
         << check(run_clean(std::string(DYNCONTACT_EXECUTABLE) + " two-bars.prm")
                    .find("command failed") == std::string::npos)
         << "\n";
-  log() << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
-                     "/check_two_bodies.py results-two-bars");
+  add_check("check_two_bodies.py", "results-two-bars");
+  log() << "ParaView:\n"
+        << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
+                     "/run_checks.py " + checks);
 }
