@@ -167,9 +167,9 @@ namespace dyncontact
     const unsigned int ranks_on_node = Utilities::MPI::n_mpi_processes(node);
     MPI_Comm_free(&node);
     // the least of the three on this rank, and which one it is
-    const std::array<double, 3> limits = {bytes / ranks_on_node,
-                                          address_space_headroom(),
-                                          cgroup_headroom() / ranks_on_node};
+    const std::array<double, 3> limits = {{bytes / ranks_on_node,
+                                           address_space_headroom(),
+                                           cgroup_headroom() / ranks_on_node}};
     const auto least = std::min_element(limits.begin(), limits.end());
     const auto sum   = Utilities::MPI::sum(*least, comm);
     // the binding limit of the rank with the least memory

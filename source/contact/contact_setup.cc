@@ -150,8 +150,13 @@ namespace dyncontact
 
     const auto pairs = contact_pairs(scene);
     search_radii.clear();
+    pair_sides.clear();
     for (const ContactPair &pair : pairs)
-      search_radii.push_back(pair.search_radius);
+      {
+        search_radii.push_back(pair.search_radius);
+        pair_sides.push_back({{pair.first_side, pair.second_side}});
+      }
+    n_bodies = scene.n_bodies();
     side_bodies.clear();
     several_pairs = pairs.size() + (scene.obstacle() ? 1 : 0) > 1;
     // the bodies of the contact boundary ids @p ids, as "1+3", for the
@@ -886,10 +891,20 @@ namespace dyncontact
           format_number(search_radius(deepest.pair)) +
           " m: Contact/Search radius, or the pair's own) from the master "
           "surface, so that it got no row that could reject or project it.";
-    // (the scenes whose pairs can overlap start undisplaced: the node's
-    // reference position is where it is at t = 0)
+    // inside the master? (the scenes whose pairs can overlap start
+    // undisplaced: the node's reference position is where it is at t = 0)
+    std::set<types::material_id> masters;
+    if (coarse_mesh)
+      {
+        const auto ids = boundary_ids_of_bodies(*coarse_mesh, n_bodies);
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          if (has_any_of(
+                ids[b],
+                pair_sides[deepest.pair][1 - slave_sides[deepest.pair]]))
+            masters.insert(b);
+      }
     const std::optional<bool> inside =
-      coarse_mesh ? inside_a_body(*coarse_mesh, deepest.position) :
+      coarse_mesh ? inside_a_body(*coarse_mesh, deepest.position, masters) :
                     std::optional<bool>();
     AssertThrow(inside.value_or(true),
                 ExcMessage(

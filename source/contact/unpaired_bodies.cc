@@ -139,6 +139,8 @@ namespace dyncontact
             }
         }
     Utilities::MPI::max(corners, comm, corners);
+    // (a body that is paired with every other has no nodes here, and no
+    // box)
     std::vector<BoundingBox<dim>> boxes(n_bodies);
     double                        size = 0.;
     for (unsigned int b = 0; b < n_bodies; ++b)
@@ -149,9 +151,11 @@ namespace dyncontact
             lower[d] = -corners[(2 * b) * dim + d];
             upper[d] = corners[(2 * b + 1) * dim + d];
           }
-        boxes[b] = BoundingBox<dim>({lower, upper});
         if (lower[0] <= upper[0])
-          size = std::max(size, lower.distance(upper));
+          {
+            boxes[b] = BoundingBox<dim>({lower, upper});
+            size     = std::max(size, lower.distance(upper));
+          }
       }
     // (round-off of bodies that touch is no overlap)
     const double tolerance = 1e-9 * size;

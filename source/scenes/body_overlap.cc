@@ -51,7 +51,9 @@ namespace dyncontact
 
   template <int dim>
   std::optional<bool>
-  inside_a_body(const Triangulation<dim> &tria, const Point<dim> &x)
+  inside_a_body(const Triangulation<dim>           &tria,
+                const Point<dim>                   &x,
+                const std::set<types::material_id> &bodies)
   {
     for (const auto &cell : tria.cell_iterators_on_level(0))
       {
@@ -61,24 +63,27 @@ namespace dyncontact
           if (cell->face(f)->manifold_id() != numbers::flat_manifold_id)
             return {};
       }
-    // inside a cell, or on its faces that are no boundary of its body
-    // (between two cells of one body)
+    // in a cell of the bodies, or on its faces between two of their cells,
+    // and on none of their boundary faces
+    bool inside = false;
     for (const auto &cell : tria.cell_iterators_on_level(0))
-      if (const auto unit = unit_point<dim>(cell, x))
-        {
-          bool inside = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const double xi = (*unit)[d];
-              inside =
-                inside && xi > -1e-8 && xi < 1. + 1e-8 &&
-                !(xi < 1e-8 && cell->face(2 * d)->at_boundary()) &&
-                !(xi > 1. - 1e-8 && cell->face(2 * d + 1)->at_boundary());
-            }
-          if (inside)
-            return true;
-        }
-    return false;
+      if (bodies.count(cell->material_id()) > 0)
+        if (const auto unit = unit_point<dim>(cell, x))
+          {
+            bool in_closure = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              in_closure =
+                in_closure && (*unit)[d] > -1e-8 && (*unit)[d] < 1. + 1e-8;
+            if (!in_closure)
+              continue;
+            for (unsigned int d = 0; d < dim; ++d)
+              if (((*unit)[d] < 1e-8 && cell->face(2 * d)->at_boundary()) ||
+                  ((*unit)[d] > 1. - 1e-8 &&
+                   cell->face(2 * d + 1)->at_boundary()))
+                return false;
+            inside = true;
+          }
+    return inside;
   }
 
 
@@ -88,7 +93,11 @@ namespace dyncontact
   template bool
   strictly_inside<3>(const Triangulation<3>::cell_iterator &, const Point<3> &);
   template std::optional<bool>
-  inside_a_body(const Triangulation<2> &, const Point<2> &);
+  inside_a_body(const Triangulation<2> &,
+                const Point<2> &,
+                const std::set<types::material_id> &);
   template std::optional<bool>
-  inside_a_body(const Triangulation<3> &, const Point<3> &);
+  inside_a_body(const Triangulation<3> &,
+                const Point<3> &,
+                const std::set<types::material_id> &);
 } // namespace dyncontact

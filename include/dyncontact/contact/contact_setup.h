@@ -293,8 +293,12 @@ namespace dyncontact
     std::vector<types::global_dof_index>      n_unmatched_in_pair;
     /// Per pair: its search radius (m), and (scenes of several pairs) the
     /// bodies of its two sides, for the banner.
-    std::vector<double>                     search_radii;
-    std::vector<std::array<std::string, 2>> side_bodies;
+    std::vector<double> search_radii;
+    /// Per pair: the boundary ids of its two sides; the scene's number of
+    /// bodies.
+    std::vector<std::array<std::vector<types::boundary_id>, 2>> pair_sides;
+    unsigned int                                                n_bodies = 0;
+    std::vector<std::array<std::string, 2>>                     side_bodies;
     /// Whether the scene has more than one pair (the obstacle counted):
     /// messages and the banner number them.
     bool               several_pairs = false;

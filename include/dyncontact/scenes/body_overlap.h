@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <optional>
+#include <set>
 
 namespace dyncontact
 {
@@ -21,17 +22,20 @@ namespace dyncontact
                   const Point<dim>                                 &x);
 
   /**
-   * Whether the point @p x of the reference configuration lies inside a
-   * body of @p tria: in a cell of its coarse mesh (which every rank holds
-   * whole), and on none of that cell's faces that bound its body (a point
-   * on a face between two cells of a body is inside; a point on a body's
-   * boundary, where bodies touch, is not). None when a coarse cell or face
-   * has a manifold other than the flat one: the finer cells then leave
-   * their coarse cells.
+   * Whether the point @p x of the reference configuration lies inside one
+   * of the bodies @p bodies (material ids) of @p tria: in a cell of their
+   * coarse mesh (which every rank holds whole), and on no face of their
+   * cells that bounds a body (a point on a face between two cells of a
+   * body is inside; a point on a body's boundary, where bodies touch, or
+   * at a re-entrant corner, is not). None when a coarse cell or face has a
+   * manifold other than the flat one: the finer cells then leave their
+   * coarse cells.
    */
   template <int dim>
   std::optional<bool>
-  inside_a_body(const Triangulation<dim> &tria, const Point<dim> &x);
+  inside_a_body(const Triangulation<dim>           &tria,
+                const Point<dim>                   &x,
+                const std::set<types::material_id> &bodies);
 } // namespace dyncontact
 
 #endif
