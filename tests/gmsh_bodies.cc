@@ -42,57 +42,8 @@
 
 namespace
 {
-  /// An axis-parallel block of nx x ny quadrilaterals with a physical cell
-  /// tag and physical tags of its bottom and top edges (0: none).
-  struct Block
-  {
-    double       x0, x1, y0, y1;
-    unsigned int nx, ny, cell_tag, bottom_tag, top_tag;
-  };
-
-  /// Writes @p blocks as a Gmsh 2.2 ASCII mesh, no vertex shared.
-  void
-  write_msh(const std::string &file, const std::vector<Block> &blocks)
-  {
-    std::ostringstream nodes, elements;
-    unsigned int       n_nodes = 0, n_elements = 0;
-    nodes << std::setprecision(17);
-    for (const Block &b : blocks)
-      {
-        const unsigned int first = n_nodes + 1;
-        for (unsigned int j = 0; j <= b.ny; ++j)
-          for (unsigned int i = 0; i <= b.nx; ++i)
-            nodes << ++n_nodes << " " << b.x0 + (b.x1 - b.x0) * i / b.nx << " "
-                  << b.y0 + (b.y1 - b.y0) * j / b.ny << " 0\n";
-        const auto node = [&](const unsigned int i, const unsigned int j) {
-          return first + j * (b.nx + 1) + i;
-        };
-        for (unsigned int j = 0; j < b.ny; ++j)
-          for (unsigned int i = 0; i < b.nx; ++i)
-            elements << ++n_elements << " 3 2 " << b.cell_tag << " "
-                     << b.cell_tag << " " << node(i, j) << " " << node(i + 1, j)
-                     << " " << node(i + 1, j + 1) << " " << node(i, j + 1)
-                     << "\n";
-        for (unsigned int i = 0; i < b.nx; ++i)
-          {
-            if (b.bottom_tag > 0)
-              elements << ++n_elements << " 1 2 " << b.bottom_tag << " "
-                       << b.bottom_tag << " " << node(i, 0) << " "
-                       << node(i + 1, 0) << "\n";
-            if (b.top_tag > 0)
-              elements << ++n_elements << " 1 2 " << b.top_tag << " "
-                       << b.top_tag << " " << node(i, b.ny) << " "
-                       << node(i + 1, b.ny) << "\n";
-          }
-      }
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
-                          << n_nodes << "\n"
-                          << nodes.str() << "$EndNodes\n$Elements\n"
-                          << n_elements << "\n"
-                          << elements.str() << "$EndElements\n";
-    MPI_Barrier(MPI_COMM_WORLD);
-  }
+  using testing::Block;
+  using testing::write_block_msh;
 
   /// The run's input: the three blocks with @p entries in Scene/Gmsh and
   /// the search radius @p radius.
@@ -134,10 +85,10 @@ main(int argc, char **argv)
   // base [0, 2] x [-0.5, 0] (bottom 10, top 11), middle [0.5, 1.5] x
   // [0.05, 0.35] (bottom 12, top 13), upper [0.6, 1.4] x [0.4, 0.6]
   // (bottom 14)
-  write_msh("three_blocks.msh",
-            {Block{0., 2., -0.5, 0., 16, 4, 1, 10, 11},
-             Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
-             Block{0.6, 1.4, 0.4, 0.6, 9, 2, 3, 14, 0}});
+  write_block_msh("three_blocks.msh",
+                  {Block{0., 2., -0.5, 0., 16, 4, 1, 10, 11},
+                   Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
+                   Block{0.6, 1.4, 0.4, 0.6, 9, 2, 3, 14, 0}});
 
   const Statistics s        = run(prm("chain",
                                "    set Contact tags = 11; 12, 13; 14\n"
@@ -219,9 +170,9 @@ main(int argc, char **argv)
   // the rigid obstacle as a master: the middle and the upper block alone,
   // the middle one on the obstacle y <= 0 (pair 2 in the statistics: the
   // obstacle comes after the pairs of two bodies), the upper one on it
-  write_msh("two_blocks.msh",
-            {Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
-             Block{0.6, 1.4, 0.4, 0.6, 9, 2, 3, 14, 0}});
+  write_block_msh("two_blocks.msh",
+                  {Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
+                   Block{0.6, 1.4, 0.4, 0.6, 9, 2, 3, 14, 0}});
   const std::string two_blocks = "    set Bodies = 2; 3\n"
                                  "    set Initial velocities = 0, -0.5; 0, "
                                  "-0.5\n"
@@ -402,10 +353,10 @@ main(int argc, char **argv)
      "    set Mesh file = " +
        std::filesystem::current_path().string() + "/overlap.msh\n"}};
   // the upper block's bottom 0.05 m inside the middle block
-  write_msh("overlap.msh",
-            {Block{0., 2., -0.5, 0., 16, 4, 1, 10, 11},
-             Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
-             Block{0.6, 1.4, 0.3, 0.5, 9, 2, 3, 14, 0}});
+  write_block_msh("overlap.msh",
+                  {Block{0., 2., -0.5, 0., 16, 4, 1, 10, 11},
+                   Block{0.5, 1.5, 0.05, 0.35, 10, 3, 2, 12, 13},
+                   Block{0.6, 1.4, 0.3, 0.5, 9, 2, 3, 14, 0}});
   for (const auto &[name, entries] : cases)
     {
       std::string message;

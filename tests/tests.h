@@ -404,6 +404,58 @@ namespace testing
 #endif
   }
 
+  /// An axis-parallel block of nx x ny quadrilaterals with a physical cell
+  /// tag and physical tags of its bottom and top edges (0: none).
+  struct Block
+  {
+    double       x0, x1, y0, y1;
+    unsigned int nx, ny, cell_tag, bottom_tag, top_tag;
+  };
+
+  /// Writes @p blocks as a Gmsh 2.2 ASCII mesh, no vertex shared.
+  inline void
+  write_block_msh(const std::string &file, const std::vector<Block> &blocks)
+  {
+    std::ostringstream nodes, elements;
+    unsigned int       n_nodes = 0, n_elements = 0;
+    nodes << std::setprecision(17);
+    for (const Block &b : blocks)
+      {
+        const unsigned int first = n_nodes + 1;
+        for (unsigned int j = 0; j <= b.ny; ++j)
+          for (unsigned int i = 0; i <= b.nx; ++i)
+            nodes << ++n_nodes << " " << b.x0 + (b.x1 - b.x0) * i / b.nx << " "
+                  << b.y0 + (b.y1 - b.y0) * j / b.ny << " 0\n";
+        const auto node = [&](const unsigned int i, const unsigned int j) {
+          return first + j * (b.nx + 1) + i;
+        };
+        for (unsigned int j = 0; j < b.ny; ++j)
+          for (unsigned int i = 0; i < b.nx; ++i)
+            elements << ++n_elements << " 3 2 " << b.cell_tag << " "
+                     << b.cell_tag << " " << node(i, j) << " " << node(i + 1, j)
+                     << " " << node(i + 1, j + 1) << " " << node(i, j + 1)
+                     << "\n";
+        for (unsigned int i = 0; i < b.nx; ++i)
+          {
+            if (b.bottom_tag > 0)
+              elements << ++n_elements << " 1 2 " << b.bottom_tag << " "
+                       << b.bottom_tag << " " << node(i, 0) << " "
+                       << node(i + 1, 0) << "\n";
+            if (b.top_tag > 0)
+              elements << ++n_elements << " 1 2 " << b.top_tag << " "
+                       << b.top_tag << " " << node(i, b.ny) << " "
+                       << node(i + 1, b.ny) << "\n";
+          }
+      }
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+                          << n_nodes << "\n"
+                          << nodes.str() << "$EndNodes\n$Elements\n"
+                          << n_elements << "\n"
+                          << elements.str() << "$EndElements\n";
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+
   /// As run_program(@p file), in this process: the executable's own code
   /// after MPI starts (dyncontact::run_command_line()), its exit status and
   /// all it printed on std::cout and std::cerr; about a second faster than
@@ -415,11 +467,14 @@ namespace testing
   run_in_process(const std::string &file)
   {
     std::ostringstream captured;
-    std::streambuf    *out     = std::cout.rdbuf(captured.rdbuf());
-    std::streambuf    *err     = std::cerr.rdbuf(captured.rdbuf());
-    std::string        program = "dyncontact", argument = file;
-    char              *argv[] = {program.data(), argument.data(), nullptr};
-    int                status = -1;
+    // (the program's messages set their precision on std::cout)
+    const std::ios_base::fmtflags flags     = std::cout.flags();
+    const std::streamsize         precision = std::cout.precision();
+    std::streambuf               *out       = std::cout.rdbuf(captured.rdbuf());
+    std::streambuf               *err       = std::cerr.rdbuf(captured.rdbuf());
+    std::string                   program = "dyncontact", argument = file;
+    char *argv[] = {program.data(), argument.data(), nullptr};
+    int   status = -1;
     try
       {
         status = dyncontact::run_command_line(2, argv);
@@ -433,6 +488,8 @@ namespace testing
       }
     std::cout.rdbuf(out);
     std::cerr.rdbuf(err);
+    std::cout.flags(flags);
+    std::cout.precision(precision);
     return {status, captured.str()};
   }
 
