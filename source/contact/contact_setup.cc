@@ -746,19 +746,7 @@ namespace dyncontact
         // this rank's faces of the deformed master surface (their vertex
         // DoFs are locally relevant)
         std::vector<MasterFace<dim>> deformed = master_surfaces[pair];
-        for (auto &face : deformed)
-          {
-            Tensor<1, dim> mean;
-            for (unsigned int v = 0; v < face.vertices.size(); ++v)
-              {
-                Tensor<1, dim> displacement;
-                for (unsigned int d = 0; d < dim; ++d)
-                  displacement[d] = ghosted(face.vertex_dofs[v * dim + d]);
-                face.vertices[v] += displacement;
-                mean += displacement / double(face.vertices.size());
-              }
-            face.cell_center += mean;
-          }
+        deform(deformed, ghosted);
         std::vector<Point<dim>> points;
         for (const auto &node : unmatched)
           if (node.pair == pair)
@@ -807,25 +795,13 @@ namespace dyncontact
                 deepest.nearer_master = node.nearer_master;
               }
           }
-    // the deepest over all ranks (the first rank among equals), with its
-    // position
-    const double       depth   = Utilities::MPI::max(deepest.depth, comm);
-    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int owner =
-      Utilities::MPI::min(depth == deepest.depth ?
-                            my_rank :
-                            Utilities::MPI::n_mpi_processes(comm),
-                          comm);
+    // the deepest over all ranks, with its position
     std::vector<double> position(dim + 2, 0.);
-    if (owner == my_rank)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          position[d] = deepest.position[d];
-        position[dim]     = deepest.pair;
-        position[dim + 1] = deepest.nearer_master ? 1. : 0.;
-      }
-    Utilities::MPI::sum(position, comm, position);
-    deepest.depth = depth;
+    for (unsigned int d = 0; d < dim; ++d)
+      position[d] = deepest.position[d];
+    position[dim]     = deepest.pair;
+    position[dim + 1] = deepest.nearer_master ? 1. : 0.;
+    deepest_over_ranks(deepest.depth, position, comm);
     for (unsigned int d = 0; d < dim; ++d)
       deepest.position[d] = position[d];
     deepest.pair          = std::lround(position[dim]);

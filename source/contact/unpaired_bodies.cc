@@ -182,20 +182,7 @@ namespace dyncontact
               // this rank's faces of the other body, deformed, and its
               // nodes of the body in the other's box
               std::vector<MasterFace<dim>> deformed = faces[other];
-              for (auto &face : deformed)
-                {
-                  Tensor<1, dim> mean;
-                  for (unsigned int v = 0; v < face.vertices.size(); ++v)
-                    {
-                      Tensor<1, dim> displacement;
-                      for (unsigned int d = 0; d < dim; ++d)
-                        displacement[d] =
-                          ghosted(face.vertex_dofs[v * dim + d]);
-                      face.vertices[v] += displacement;
-                      mean += displacement / double(face.vertices.size());
-                    }
-                  face.cell_center += mean;
-                }
+              deform(deformed, ghosted);
               std::vector<Point<dim>>   points;
               std::vector<const Node *> of_points;
               BoundingBox<dim>          box = boxes[other];
@@ -224,24 +211,13 @@ namespace dyncontact
             }
         }
 
-    // the deepest over all ranks (the first rank among equals)
-    const double       depth   = Utilities::MPI::max(deepest.depth, comm);
-    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int owner =
-      Utilities::MPI::min(depth == deepest.depth ?
-                            my_rank :
-                            Utilities::MPI::n_mpi_processes(comm),
-                          comm);
+    // the deepest over all ranks
     std::vector<double> data(dim + 2, 0.);
-    if (owner == my_rank)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          data[d] = deepest.position[d];
-        data[dim]     = deepest.body;
-        data[dim + 1] = deepest.other;
-      }
-    Utilities::MPI::sum(data, comm, data);
-    deepest.depth = depth;
+    for (unsigned int d = 0; d < dim; ++d)
+      data[d] = deepest.position[d];
+    data[dim]     = deepest.body;
+    data[dim + 1] = deepest.other;
+    deepest_over_ranks(deepest.depth, data, comm);
     for (unsigned int d = 0; d < dim; ++d)
       deepest.position[d] = data[d];
     deepest.body  = std::lround(data[dim]);

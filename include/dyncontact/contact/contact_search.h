@@ -3,9 +3,11 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <dyncontact/contact/contact_mapping.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace dyncontact
@@ -46,6 +48,50 @@ namespace dyncontact
   closest_faces(const std::vector<MasterFace<dim>> &faces,
                 const std::vector<Point<dim>>      &points,
                 const MPI_Comm                      comm);
+
+
+
+  /// Moves the vertices and the cell centre of each of @p faces by the
+  /// displacement @p ghosted (its vertex DoFs locally relevant): the
+  /// deformed surface.
+  template <int dim, typename Vector>
+  void
+  deform(std::vector<MasterFace<dim>> &faces, const Vector &ghosted)
+  {
+    for (auto &face : faces)
+      {
+        Tensor<1, dim> mean;
+        for (unsigned int v = 0; v < face.vertices.size(); ++v)
+          {
+            Tensor<1, dim> displacement;
+            for (unsigned int d = 0; d < dim; ++d)
+              displacement[d] = ghosted(face.vertex_dofs[v * dim + d]);
+            face.vertices[v] += displacement;
+            mean += displacement / double(face.vertices.size());
+          }
+        face.cell_center += mean;
+      }
+  }
+
+
+
+  /**
+   * The largest of the ranks' @p depth, and the @p data of the rank that
+   * has it (the first among equals), on every rank: for the deepest of
+   * the points that each rank found. Collective.
+   */
+  inline void
+  deepest_over_ranks(double &depth, std::vector<double> &data, MPI_Comm comm)
+  {
+    const double       largest = Utilities::MPI::max(depth, comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int owner   = Utilities::MPI::min(
+      depth == largest ? my_rank : Utilities::MPI::n_mpi_processes(comm), comm);
+    if (owner != my_rank)
+      std::fill(data.begin(), data.end(), 0.);
+    Utilities::MPI::sum(data, comm, data);
+    depth = largest;
+  }
 } // namespace dyncontact
 
 #endif
