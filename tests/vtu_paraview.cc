@@ -3,7 +3,10 @@
 // several pieces per rank ('Cells per piece'), is loaded with pvpython
 // (tests/check_vtu.py), which checks that all fields are there and that the
 // mesh warped by the displacement puts the bar's end where the exact
-// solution puts it (free flight, in contact at the wall, after release).
+// solution puts it (free flight, in contact at the wall, after release),
+// and that the velocity, von Mises stress, contact pressure and critical
+// set fields are the exact ones in free flight and behind and ahead of the
+// compression front (the stress rho c v0).
 // Then 2-rank runs whose ranks write different numbers of pieces, or none
 // (tests/check_pieces.py: every listed piece exists, all cells are there),
 // and a two-bars run (tests/check_two_bodies.py): the gap field on the
