@@ -1,11 +1,12 @@
 // Error in the physical energy norm (eqs. 22-24) of N-CS++ against the exact
 // bar impact solution (ALGORITHMS.md section 7), over three joint
 // refinements of h and tau at a fixed ratio tau c / h = 1/2: the maximum over
-// time of the error decreases at each refinement; the observed rates are
-// printed (the paper proves O(tau^{1/2}) in the worst case). Beside it the
-// position error: the bar's mean displacement at T = 2.5 s against the exact
-// -g0 + v0 (T - g0/v0 - 2L/c) = 0.3 m (it left the wall at 2.1 s), which
-// decreases too.
+// time of the error falls at the rate measured for this problem, h^0.3 (a
+// rate in [0.2, 0.45] at each refinement; the paper proves O(tau^{1/2}) in
+// the worst case, and the velocity jump of the exact solution limits it).
+// Beside it the position error: the bar's mean displacement at T = 2.5 s
+// against the exact -g0 + v0 (T - g0/v0 - 2L/c) = 0.3 m (it left the wall
+// at 2.1 s), which falls at a rate in [0.6, 1] (measured 0.74-0.8).
 
 #include "tests.h"
 
@@ -29,13 +30,16 @@ main(int argc, char **argv)
           log() << "  cells " << cells << ": max error " << fmt(error, 2);
           if (previous > 0.)
             log() << ", rate " << fmt(std::log2(previous / error), 2)
-                  << ", decreasing: " << check(error < 0.9 * previous);
+                  << ", in [0.2, 0.45] (h^0.3 measured): "
+                  << check(std::log2(previous / error) >= 0.2 &&
+                           std::log2(previous / error) <= 0.45);
           log() << "\n    position error at T " << fmt(position, 2);
           if (previous_position > 0.)
             log() << ", rate "
                   << fmt(std::log2(previous_position / position), 2)
-                  << ", decreasing: "
-                  << check(position < 0.8 * previous_position);
+                  << ", in [0.6, 1]: "
+                  << check(std::log2(previous_position / position) >= 0.6 &&
+                           std::log2(previous_position / position) <= 1.);
           log() << "\n";
           previous          = error;
           previous_position = position;
