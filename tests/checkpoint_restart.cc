@@ -100,9 +100,24 @@ main(int argc, char **argv)
             << ", the statistics agree to 1e-10: " << check(difference <= 1e-10)
             << "\n";
       if (c.print_final_state)
-        log() << "  final energy "
-              << fmt(resumed.column("energy_total").back(), 6) << ", momentum "
-              << fmt(resumed.column("momentum_x").back(), 6) << "\n";
+        {
+          // in units of their size at t = 0 (the energy, the sum of the
+          // bodies' momenta), so that numdiff's absolute tolerance (1e-6)
+          // is a relative one
+          const double p  = resumed.column("momentum_x")[0];
+          const double p2 = resumed.has_column("momentum_x_body2") ?
+                              resumed.column("momentum_x_body2")[0] :
+                              0.;
+          log() << "  final energy / E(0) "
+                << fmt(resumed.column("energy_total").back() /
+                         resumed.column("energy_total")[0],
+                       6)
+                << ", momentum / sum of the bodies' |momentum(0)| "
+                << fmt(resumed.column("momentum_x").back() /
+                         (std::abs(p - p2) + std::abs(p2)),
+                       6)
+                << "\n";
+        }
     }
 
   // a changed time step is refused
