@@ -34,9 +34,8 @@ main(int argc, char **argv)
   const Statistics s = run(bar_prm(2, "N-CS++", 32, tau, 2.25, extra));
 
   const auto steps = s.column("step");
-  log() << "ran to t = 2.25 (" << steps.back()
-        << " steps): " << check(std::abs(s.column("time").back() - 2.25) < 1e-12)
-        << "\n";
+  log() << "ran to t = 2.25 (" << steps.back() << " steps): "
+        << check(std::abs(s.column("time").back() - 2.25) < 1e-12) << "\n";
   const double iterations = max_of(s.column("active_set_iterations"));
   log() << "at most 3 active-set iterations in a step: "
         << check(iterations <= 3) << "\n";

@@ -160,73 +160,47 @@ namespace dyncontact
         if (unmatched.depth > 0.)
           {
             max_penetration = std::max(max_penetration, unmatched.depth);
-            ++n_warnings;
-            if (n_warnings <= 3)
-              {
-                auto &out = this->get_pcout();
-                out << std::setprecision(3) << "   warning: step "
-                    << this->get_control().get_step()
-                    << " (t = " << this->get_control().get_time()
-                    << " s): the slave node at (";
-                for (unsigned int d = 0; d < dim; ++d)
-                  out << (d > 0 ? ", " : "") << unmatched.position[d];
-                const auto        &contact = this->get_contact();
-                const unsigned int n_pairs =
-                  this->get_scene().contact_pairs().size();
-                const std::string pair =
-                  n_pairs + (this->get_scene().obstacle() ? 1 : 0) > 1 ?
-                    " of contact pair " + std::to_string(unmatched.pair + 1) :
-                    std::string();
-                out << ") has no constraint row" << pair << " and lies "
-                    << unmatched.depth << " m inside "
-                    << (unmatched.pair >= n_pairs ? "the rigid obstacle" :
-                                                    "the other body");
-                if (unmatched.nearer_master)
-                  out << ": it kept the row of a master of another pair, "
-                         "nearer in the reference configuration, where the "
-                         "rows are chosen (the linearised contact assumes "
-                         "small displacements).";
-                else
-                  out << ": it was farther than the pair's search radius ("
-                      << contact.search_radius(unmatched.pair)
-                      << " m, 'Contact/Search radius' or the pair's own) "
-                         "from the master surface when the rows were built. "
-                         "Increase the search radius.";
-                out << (n_warnings == 3 ? " (Further such warnings are not "
-                                          "printed; see the column "
-                                          "max_penetration.)" :
-                                          "")
-                    << std::endl;
-              }
+            const auto        &contact = this->get_contact();
+            const unsigned int n_pairs =
+              this->get_scene().contact_pairs().size();
+            const std::string pair =
+              n_pairs + (this->get_scene().obstacle() ? 1 : 0) > 1 ?
+                " of contact pair " + std::to_string(unmatched.pair + 1) :
+                std::string();
+            std::ostringstream text;
+            text << std::setprecision(3) << "the slave node at "
+                 << point_text(unmatched.position) << " has no constraint row"
+                 << pair << " and lies " << unmatched.depth << " m inside "
+                 << (unmatched.pair >= n_pairs ? "the rigid obstacle" :
+                                                 "the other body");
+            if (unmatched.nearer_master)
+              text << ": it kept the row of a master of another pair, "
+                      "nearer in the reference configuration, where the "
+                      "rows are chosen (the linearised contact assumes "
+                      "small displacements).";
+            else
+              text << ": it was farther than the pair's search radius ("
+                   << contact.search_radius(unmatched.pair)
+                   << " m, 'Contact/Search radius' or the pair's own) "
+                      "from the master surface when the rows were built. "
+                      "Increase the search radius.";
+            warn(n_warnings, text.str());
           }
         const auto overlap = this->get_contact().get_unpaired_bodies().deepest(
           this->get_solution());
         if (overlap.depth > 0.)
           {
             max_penetration = std::max(max_penetration, overlap.depth);
-            ++n_overlap_warnings;
-            if (n_overlap_warnings <= 3)
-              {
-                auto &out = this->get_pcout();
-                out << std::setprecision(3) << "   warning: step "
-                    << this->get_control().get_step()
-                    << " (t = " << this->get_control().get_time()
-                    << " s): bodies " << overlap.body + 1 << " and "
-                    << overlap.other + 1
-                    << ", which no contact pair holds apart, pass into each "
-                       "other: the boundary node of body "
-                    << overlap.body + 1 << " at (";
-                for (unsigned int d = 0; d < dim; ++d)
-                  out << (d > 0 ? ", " : "") << overlap.position[d];
-                out << ") of the mesh lies " << overlap.depth
-                    << " m inside body " << overlap.other + 1
-                    << ". Pair them (e.g. in Scene/Gmsh/Contact pairs)."
-                    << (n_overlap_warnings == 3 ?
-                          " (Further such warnings are not printed; see the "
-                          "column max_penetration.)" :
-                          "")
-                    << std::endl;
-              }
+            std::ostringstream text;
+            text << std::setprecision(3) << "bodies " << overlap.body + 1
+                 << " and " << overlap.other + 1
+                 << ", which no contact pair holds apart, pass into each "
+                    "other: the boundary node of body "
+                 << overlap.body + 1 << " at " << point_text(overlap.position)
+                 << " of the mesh lies " << overlap.depth << " m inside body "
+                 << overlap.other + 1
+                 << ". Pair them (e.g. in Scene/Gmsh/Contact pairs).";
+            warn(n_overlap_warnings, text.str());
           }
         row.insert(row.end(),
                    {n_active, measure, force, max_pressure, max_penetration});
@@ -235,6 +209,36 @@ namespace dyncontact
     private:
       unsigned int n_warnings         = 0;
       unsigned int n_overlap_warnings = 0;
+
+      /// "(x, y)" of @p x, as the warnings print it.
+      static std::string
+      point_text(const Point<dim> &x)
+      {
+        std::ostringstream out;
+        out << std::setprecision(3) << "(";
+        for (unsigned int d = 0; d < dim; ++d)
+          out << (d > 0 ? ", " : "") << x[d];
+        out << ")";
+        return out.str();
+      }
+
+      /// Prints "warning: step n (t = ...): @p text" for the first three of
+      /// a kind (counted in @p count), the third saying that no more follow.
+      void
+      warn(unsigned int &count, const std::string &text) const
+      {
+        if (++count > 3)
+          return;
+        this->get_pcout() << std::setprecision(3) << "   warning: step "
+                          << this->get_control().get_step()
+                          << " (t = " << this->get_control().get_time()
+                          << " s): " << text
+                          << (count == 3 ? " (Further such warnings are not "
+                                           "printed; see the column "
+                                           "max_penetration.)" :
+                                           "")
+                          << std::endl;
+      }
     };
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Contact,
