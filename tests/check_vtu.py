@@ -6,7 +6,8 @@
 # and at t = 2.5 s (released) at x = -0.1 + 0.4 m up to the scheme's error.
 # Then the velocity, von Mises stress, contact pressure and critical set
 # fields against the exact solution in free flight and behind and ahead of
-# the compression front.
+# the compression front, and the critical set at every output time against
+# the measure that the statistics give of it.
 # Usage: pvpython check_vtu.py results-directory
 import sys
 
@@ -74,6 +75,36 @@ print("t = 0.6: behind the front velocity %.2g to %.2g, mean %.2g (0), von "
          and abs(m[behind] - 1.).max() <= 0.12 and abs(m[behind].mean() - 1.) <= 0.02
          and abs(v[ahead] + 1.).max() <= 0.05 and m[ahead].max() <= 0.05
          else "FAILED"))
+
+# the critical set field against the statistics: at each output time the
+# nodes it marks, each weighted by its share of the bar's end (the
+# trapezoidal rule on the end's nodes), measure what the statistics say of
+# that step (critical_measure) to 1e-6 (the VTU's points are in single
+# precision); it is 0 or 1 and marks no node off the end
+with open(directory + "/statistics.tsv") as f:
+    rows = [line.rstrip("\n").split("\t") for line in f if not line.startswith("#")]
+column = {name: i for i, name in enumerate(rows[0])}
+measure_of_step = {round(float(r[column["time"]]), 9): float(r[column["critical_measure"]])
+                   for r in rows[1:]}
+worst, marked_times, valid = 0., [], True
+for t in times:
+    data = fetch(reader, t)
+    x, y = data.Points[:, 0], data.Points[:, 1]
+    critical = data.PointData["critical_set"]
+    valid = valid and all(abs(c) <= 1e-12 or abs(c - 1.) <= 1e-12 for c in critical) \
+        and all(x[critical > 0.5] < 1e-9)
+    end = sorted(set(round(float(v), 12) for v in y[x < 1e-9]))
+    share = {v: 0.5 * ((end[min(i + 1, len(end) - 1)] - end[max(i - 1, 0)]))
+             for i, v in enumerate(end)}
+    marked = set(round(float(v), 12) for v in y[(x < 1e-9) & (critical > 0.5)])
+    measure = sum(share[v] for v in marked)
+    worst = max(worst, abs(measure - measure_of_step[round(t, 9)]))
+    if marked:
+        marked_times.append("t = %.3g: %d nodes, %.3g" % (t, len(marked), measure))
+print("critical_set at %d output times against critical_measure (1e-6): %s; "
+      "marked at %s: %s"
+      % (len(times), "below 1e-6" if worst <= 1e-6 else "%.1g" % worst, ", ".join(marked_times) or "none",
+         "OK" if valid and worst <= 1e-6 and len(marked_times) == 1 else "FAILED"))
 
 data = fetch(reader, 1.1)
 p = data.PointData["contact_pressure"]

@@ -353,6 +353,22 @@ main(int argc, char **argv)
            testing::scene_entries("Gmsh", "    set Dirichlet tags = 70000\n"),
          "Scene/Gmsh/Dirichlet tags"},
     {"gmsh",
+         "a Dirichlet component that is not x or y",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Dirichlet tags = 10: z\n"),
+         "Scene/Gmsh/Dirichlet tags: '10: z' names the component 'z'; the "
+             "components of a tag (after ':') are letters of 'xy'"},
+    {"gmsh",
+         "a Dirichlet tag with ':' and no component",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Dirichlet tags = 10:\n"),
+         "Scene/Gmsh/Dirichlet tags: '10:' names no component after ':'"},
+    {"gmsh",
+         "a Dirichlet component without its tag",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Dirichlet tags = : y\n"),
+         "Scene/Gmsh/Dirichlet tags: ': y' has no tag before ':'"},
+    {"gmsh",
          "velocity that is a word",
          gmsh("two_blocks.msh") +
            testing::scene_entries("Gmsh",

@@ -1,9 +1,10 @@
 // The study driver (benchmarks/study.py) on a short sweep: bar impact (gap
 // 0.1037 m, so that contact does not begin exactly at a time step), N-CI and
 // N-CS++, two joint refinements of h and tau. Checks of its CSV: the error
-// in the energy norm decreases under the joint refinement; N-CS++'s pressure
-// overshoot stays below N-CI's; sum meas Gamma* of N-CS++ is the measure of
-// the contact boundary (0.1 m) once per impact, whatever tau. Then the plot
+// in the energy norm falls at the known rate under the joint refinement;
+// N-CS++'s pressure overshoot stays below N-CI's; sum meas Gamma* of N-CS++
+// is the measure of the contact boundary (0.1 m) once per impact, whatever
+// tau. Then the plot
 // script (benchmarks/plot_study.py) makes its three PNGs from a small CSV
 // fixture (tests/study_fixture.csv).
 
@@ -67,12 +68,16 @@ main(int argc, char **argv)
     by[r.at("scheme")].push_back(r);
   for (const std::string scheme : {"N-CI", "N-CS++"})
     {
-      const auto &r = by[scheme];
-      log() << scheme << ": error decreases under joint refinement of h and "
-            << "tau: "
-            << check(r.size() == 2 && std::stod(r[1].at("error_max")) <
-                                        0.9 * std::stod(r[0].at("error_max")))
-            << "\n";
+      // (the energy-norm error of the bar falls like h^0.3 behind the
+      // fronts: tests/bar_impact_convergence, doc/results.md)
+      const auto  &r    = by[scheme];
+      const double rate = r.size() == 2 ?
+                            std::log2(std::stod(r[0].at("error_max")) /
+                                      std::stod(r[1].at("error_max"))) :
+                            0.;
+      log() << scheme << ": the error's rate under joint refinement of h and "
+            << "tau " << fmt(rate, 2) << " (h^0.3 known; in [0.2, 0.45]): "
+            << check(rate >= 0.2 && rate <= 0.45) << "\n";
     }
   bool overshoot = by["N-CI"].size() == 2 && by["N-CS++"].size() == 2;
   for (unsigned int i = 0; overshoot && i < 2; ++i)

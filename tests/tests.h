@@ -405,11 +405,11 @@ namespace testing
   }
 
   /// An axis-parallel block of nx x ny quadrilaterals with a physical cell
-  /// tag and physical tags of its bottom and top edges (0: none).
+  /// tag and physical tags of its bottom, top and left edges (0: none).
   struct Block
   {
     double       x0, x1, y0, y1;
-    unsigned int nx, ny, cell_tag, bottom_tag, top_tag;
+    unsigned int nx, ny, cell_tag, bottom_tag, top_tag, left_tag = 0;
   };
 
   /// Writes @p blocks as a Gmsh 2.2 ASCII mesh, no vertex shared.
@@ -446,6 +446,9 @@ namespace testing
                        << b.top_tag << " " << node(i, b.ny) << " "
                        << node(i + 1, b.ny) << "\n";
           }
+        for (unsigned int j = 0; j < b.ny && b.left_tag > 0; ++j)
+          elements << ++n_elements << " 1 2 " << b.left_tag << " " << b.left_tag
+                   << " " << node(0, j) << " " << node(0, j + 1) << "\n";
       }
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"

@@ -42,6 +42,57 @@ namespace dyncontact
       return tags;
     }
 
+    /// "Dirichlet tags": a list of tags, each with the displacement
+    /// components it fixes ("10, 11: y, 12: xz"; a tag alone fixes all).
+    template <int dim>
+    std::map<unsigned int, std::array<bool, 3>>
+    parse_dirichlet_tags(const std::string &text)
+    {
+      std::map<unsigned int, std::array<bool, 3>> fixed;
+      const std::string letters = dim == 2 ? "xy" : "xyz";
+      for (const auto &item : Utilities::split_string_list(text, ','))
+        {
+          const auto        colon = item.find(':');
+          const std::string components =
+            colon == std::string::npos ? letters : item.substr(colon + 1);
+          // (the tag alone, as parse_tags reads it: one integer)
+          const std::string tag_text = Utilities::trim(item.substr(0, colon));
+          AssertThrow(!tag_text.empty() &&
+                        tag_text.find(',') == std::string::npos,
+                      ExcMessage("Scene/Gmsh/Dirichlet tags: '" + item +
+                                 "' has no tag before ':'."));
+          const unsigned int tag =
+            *parse_tags(tag_text, "Dirichlet tags").begin();
+          std::array<bool, 3> chosen{{false, false, false}};
+          unsigned int        n = 0;
+          for (const char c : components)
+            if (c != ' ')
+              {
+                const auto d = letters.find(c);
+                AssertThrow(d != std::string::npos,
+                            ExcMessage(
+                              "Scene/Gmsh/Dirichlet tags: '" + item +
+                              "' names the component '" + std::string(1, c) +
+                              "'; the components of a tag (after ':') are "
+                              "letters of '" +
+                              letters +
+                              "' (e.g. '11: y' fixes u_y on tag 11)."));
+                chosen[d] = true;
+                ++n;
+              }
+          AssertThrow(n > 0,
+                      ExcMessage(
+                        "Scene/Gmsh/Dirichlet tags: '" + item +
+                        "' names no component after ':' (letters of '" +
+                        letters + "', or the tag alone for all)."));
+          auto &entry =
+            fixed.try_emplace(tag, std::array<bool, 3>{}).first->second;
+          for (unsigned int d = 0; d < 3; ++d)
+            entry[d] = entry[d] || chosen[d];
+        }
+      return fixed;
+    }
+
     template <int dim>
     Tensor<1, dim>
     parse_vector(const std::string &text,
@@ -380,8 +431,11 @@ namespace dyncontact
     prm.declare_entry("Dirichlet tags",
                       "",
                       Patterns::Anything(),
-                      "Physical tags of clamped boundaries (all "
-                      "displacement components zero).");
+                      "Physical tags of boundaries where the displacement "
+                      "is held at zero, comma-separated: a tag alone fixes "
+                      "all components (a clamp), a tag followed by ':' and "
+                      "letters of x, y, z only those (a roller or symmetry "
+                      "plane), e.g. '10, 11: y, 12: xz'.");
     prm.declare_entry("Neumann tags",
                       "",
                       Patterns::Anything(),
@@ -503,10 +557,13 @@ namespace dyncontact
   {
     prm.enter_subsection("Scene");
     prm.enter_subsection("Gmsh");
-    mesh_file      = prm.get("Mesh file");
-    dirichlet_tags = parse_tags(prm.get("Dirichlet tags"), "Dirichlet tags");
-    neumann_tags   = parse_tags(prm.get("Neumann tags"), "Neumann tags");
-    traction       = parse_vector<dim>(prm.get("Neumann traction"),
+    mesh_file            = prm.get("Mesh file");
+    dirichlet_components = parse_dirichlet_tags<dim>(prm.get("Dirichlet tags"));
+    dirichlet_tags.clear();
+    for (const auto &[tag, components] : dirichlet_components)
+      dirichlet_tags.insert(tag);
+    neumann_tags = parse_tags(prm.get("Neumann tags"), "Neumann tags");
+    traction     = parse_vector<dim>(prm.get("Neumann traction"),
                                  "Neumann traction",
                                  1e15,
                                  "Pa");
@@ -885,8 +942,8 @@ namespace dyncontact
   GmshScene<dim>::dirichlet_boundaries() const
   {
     std::vector<DirichletBoundary> boundaries;
-    for (const auto tag : dirichlet_tags)
-      boundaries.push_back({types::boundary_id(tag)});
+    for (const auto &[tag, components] : dirichlet_components)
+      boundaries.push_back({types::boundary_id(tag), components});
     return boundaries;
   }
 

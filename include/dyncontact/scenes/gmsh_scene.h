@@ -3,6 +3,8 @@
 
 #include <dyncontact/scenes/interface.h>
 
+#include <array>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -108,9 +110,11 @@ namespace dyncontact
     std::set<unsigned int> obstacle_slaves;
     RigidObstacle<dim>     rigid_obstacle;
     std::set<unsigned int> dirichlet_tags;
-    std::set<unsigned int> neumann_tags;
-    Tensor<1, dim>         traction;
-    Tensor<1, dim>         gravity;
+    /// The displacement components that each Dirichlet tag fixes.
+    std::map<unsigned int, std::array<bool, 3>> dirichlet_components;
+    std::set<unsigned int>                      neumann_tags;
+    Tensor<1, dim>                              traction;
+    Tensor<1, dim>                              gravity;
   };
 } // namespace dyncontact
 
