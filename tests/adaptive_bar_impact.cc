@@ -21,7 +21,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   const std::string adaptive = "subsection Mesh refinement\n"
@@ -104,7 +104,7 @@ main(int argc, char **argv)
 
   // (one process: the program's log says which side is the slave at each
   // set-up)
-  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  if (testing::this_rank() == 0)
     {
       std::ofstream("two_bars_recovery.prm")
         << bar_prm(2, "N-CS++", 40, 1. / 160., 0.8, recovery_two_bars_prm())

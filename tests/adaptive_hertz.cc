@@ -11,7 +11,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   // (the input as one string for every rank: each rank writing hertz.prm

@@ -93,7 +93,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
   const double interval = 0.03, end = 0.5;
   // 0, 0.03, ..., 0.48 and End time

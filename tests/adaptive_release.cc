@@ -15,7 +15,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   const double      tau = 1. / 256., h = 1. / 128., g0 = 0.1, L = 1.;

@@ -14,6 +14,8 @@
 // (nu = 0, with the error norm) and viscous (nu = 0.25, viscosities
 // mu_v = 0.2, lambda_v = 0.1 Pa s, in the unit run scaled by c/(E L)).
 
+#include <map>
+
 #include "tests.h"
 
 namespace
@@ -49,7 +51,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   for (const unsigned int dim : {2u, 3u})

@@ -34,7 +34,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
   std::filesystem::remove_all("earlier");
   const auto prm = [](const double end_time, const bool vtu) {

@@ -18,7 +18,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   const double       tau = 1. / 128.;
@@ -58,7 +58,7 @@ main(int argc, char **argv)
                 (widening == 1 ? "inside" : "leaves");
     }
   // (in one pvpython: each start takes seconds)
-  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  if (testing::this_rank() == 0)
     log() << "ParaView (check_front.py, Front widening = 1, then 0):\n"
           << run_clean(std::string(DYNCONTACT_PVPYTHON) + " " + SOURCE_DIR +
                        "/run_checks.py " + checks);

@@ -63,7 +63,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   write_block_msh("block.msh", {Block{0., W, 0., H, 6, 4, 1, 10, 11}});

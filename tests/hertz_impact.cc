@@ -14,7 +14,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   std::ifstream in(std::string(DYNCONTACT_PRM_DIR) + "/ball_drop_adaptive.prm");

@@ -51,7 +51,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   const double E_star = 1. / (2. * (1. - 0.3 * 0.3)), R = 1.;

@@ -60,7 +60,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
 
   const unsigned int cells = 32;
   const double       h = 1. / cells, c = 1., v0 = 1., tau = h / (2. * c);

@@ -14,7 +14,7 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
   const double tau = 0.0125, end = 0.5;
   auto         reference = [&](const std::string &directory, const bool write) {

@@ -16,10 +16,9 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
-  const unsigned int rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const unsigned int rank = testing::this_rank();
 
   // rank 0 alone
   MPI_Comm one_rank;

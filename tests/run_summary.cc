@@ -56,8 +56,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double                             tau = 0.0125;
+  dyncontact::MPIInitFinalize mpi(argc, argv);
+  const double                tau = 0.0125;
   const std::string prm = testing::bar_prm(2, "N-CS++", 40, tau, 2.5) +
                           "set Output directory = summary\n";
   std::ofstream("summary.prm") << prm;

@@ -27,13 +27,13 @@
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   const auto triangulation = [](const std::string &kind) {
     return "subsection Mesh\n  set Triangulation = " + kind + "\nend\n";
   };
-  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+  if (testing::n_ranks() > 1)
     {
       std::string message;
       try

@@ -54,7 +54,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
 
   const std::string viscous = "subsection Material\n"
                               "  set Poisson's ratio = 0.3\n"

@@ -63,7 +63,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
 
   compare("Hertz drop, Q2, lumped mass, hanging nodes", hertz_prm(2, "lumped"));
   compare("Hertz drop, Q3, consistent mass, hanging nodes",

@@ -4,12 +4,10 @@
 #ifndef dyncontact_tests_h
 #define dyncontact_tests_h
 
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/utilities.h>
-
 #include <dyncontact/base/statistics.h>
 #include <dyncontact/core/run.h>
 
+#include <mpi.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -28,13 +26,32 @@ namespace testing
 {
   using dyncontact::Statistics;
 
+  /// This process's rank in MPI_COMM_WORLD. (tests.h includes none of
+  /// deal.II, so that a test that includes only it compiles in a second.)
+  inline unsigned int
+  this_rank()
+  {
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    return rank;
+  }
+
+  /// The number of ranks in MPI_COMM_WORLD.
+  inline unsigned int
+  n_ranks()
+  {
+    int n = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &n);
+    return n;
+  }
+
   /// The file "output" on rank 0, a null stream elsewhere.
   inline std::ostream &
   log()
   {
     static std::ofstream      file;
     static std::ostringstream sink;
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    if (this_rank() != 0)
       {
         sink.str("");
         return sink;
@@ -229,7 +246,7 @@ namespace testing
   statistics_difference(
     const Statistics  &a,
     const Statistics  &b,
-    const unsigned int sampled_row = dealii::numbers::invalid_unsigned_int)
+    const unsigned int sampled_row = static_cast<unsigned int>(-1))
   {
     if (a.rows.size() != b.rows.size() || a.columns != b.columns)
       return {1e300, "the shape"};
@@ -450,7 +467,7 @@ namespace testing
           elements << ++n_elements << " 1 2 " << b.left_tag << " " << b.left_tag
                    << " " << node(0, j) << " " << node(0, j + 1) << "\n";
       }
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    if (this_rank() == 0)
       std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
                           << n_nodes << "\n"
                           << nodes.str() << "$EndNodes\n$Elements\n"

@@ -89,7 +89,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
   const double mu_v = 0.05, tau = 0.01;

@@ -32,7 +32,7 @@ count_pieces(const std::string &pvtu)
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
   // the ParaView checks of all runs, in one pvpython at the end (each start
   // of pvpython takes seconds)

@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <dyncontact/base/collective_errors.h>
@@ -92,6 +93,16 @@ namespace dyncontact
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     return run_command_line(argc, argv);
   }
+
+
+
+  MPIInitFinalize::MPIInitFinalize(int &argc, char **&argv)
+    : mpi(std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv, 1))
+  {}
+
+
+
+  MPIInitFinalize::~MPIInitFinalize() = default;
 
 
 

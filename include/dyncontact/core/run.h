@@ -1,12 +1,18 @@
 #ifndef dyncontact_run_h
 #define dyncontact_run_h
 
-#include <deal.II/base/mpi.h>
-
 #include <dyncontact/base/statistics.h>
 
+#include <mpi.h>
+
 #include <iosfwd>
+#include <memory>
 #include <string>
+
+namespace dealii::Utilities::MPI
+{
+  class MPI_InitFinalize;
+}
 
 namespace dyncontact
 {
@@ -35,6 +41,23 @@ namespace dyncontact
   /// process, for the many inputs that must be refused.)
   int
   run_command_line(int argc, char **argv);
+
+  /**
+   * deal.II's Utilities::MPI::MPI_InitFinalize with one thread (MPI, p4est,
+   * PETSc and what else deal.II starts with MPI, for the life of the
+   * object) behind a header that includes none of deal.II: the tests that
+   * drive the program through run_simulation() compile in a second instead
+   * of parsing deal.II.
+   */
+  class MPIInitFinalize
+  {
+  public:
+    MPIInitFinalize(int &argc, char **&argv);
+    ~MPIInitFinalize();
+
+  private:
+    std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+  };
 } // namespace dyncontact
 
 #endif
