@@ -1,8 +1,9 @@
 // The deal.II headers that most of the program's files include, directly or
-// through its own headers, precompiled once (CMakeLists.txt): a build parses
-// them once instead of once per file, which takes a third of the compile
-// time. Only a build aid: every file still includes what it uses, which
-// cmake -DDYNCONTACT_PRECOMPILED_HEADERS=OFF checks.
+// through its own headers, precompiled once (CMakeLists.txt) for the tests
+// that include them and for the library's files when they are compiled one
+// by one (DYNCONTACT_UNITY_BUILD=OFF). Only a build aid: every file still
+// includes what it uses, which cmake -DDYNCONTACT_PRECOMPILED_HEADERS=OFF
+// checks.
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>

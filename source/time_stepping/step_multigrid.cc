@@ -10,7 +10,10 @@
 
 namespace dyncontact
 {
-  namespace
+  // (a named namespace, not an anonymous one: the preconditioner's closure,
+  // a member of StepMultigrid's, holds a Cycle, which GCC would warn about
+  // in the unity build, where this file is not the main file)
+  namespace step_multigrid
   {
     using LAVector = LinearAlgebra::distributed::Vector<double>;
 
@@ -59,14 +62,14 @@ namespace dyncontact
       LAVector   r_fine, y_fine, t_fine, r_coarse;
       VectorType r_trilinos_coarse, e_trilinos_coarse;
     };
-  } // namespace
+  } // namespace step_multigrid
 
 
 
   template <int dim>
   struct StepMultigrid<dim>::Transfer
   {
-    MGTwoLevelTransfer<dim, LAVector> two_level;
+    MGTwoLevelTransfer<dim, step_multigrid::LAVector> two_level;
     /// AMG's near-null space on the linear level
     ActiveSetSolver::NearNullSpace modes;
   };
@@ -119,7 +122,7 @@ namespace dyncontact
                                           const VectorType &S_diagonal) const
   {
     Assert(transfer != nullptr, ExcInternalError());
-    auto cycle = std::make_shared<Cycle>();
+    auto cycle = std::make_shared<step_multigrid::Cycle>();
 
     // the coarse level: S_1 assembled, and its AMG
     coarse.assemble_stiffness_matrix(cycle->S_coarse, a, b, 1.);
@@ -130,15 +133,17 @@ namespace dyncontact
     cycle->fine_operator.S = S_vmult;
     cycle->fine_operator.x.reinit(fine.locally_owned_dofs(), comm);
     cycle->fine_operator.y.reinit(fine.locally_owned_dofs(), comm);
-    for (LAVector *v : {&cycle->r_fine, &cycle->y_fine, &cycle->t_fine})
+    for (step_multigrid::LAVector *v :
+         {&cycle->r_fine, &cycle->y_fine, &cycle->t_fine})
       v->reinit(fine.locally_owned_dofs(), comm);
     cycle->r_coarse.reinit(coarse.locally_owned_dofs(), comm);
     cycle->r_trilinos_coarse.reinit(coarse.locally_owned_dofs(), comm);
     cycle->e_trilinos_coarse.reinit(coarse.locally_owned_dofs(), comm);
 
-    typename Smoother::AdditionalData data;
-    data.preconditioner = std::make_shared<DiagonalMatrix<LAVector>>();
-    LAVector &inverse   = data.preconditioner->get_vector();
+    typename step_multigrid::Smoother::AdditionalData data;
+    data.preconditioner =
+      std::make_shared<DiagonalMatrix<step_multigrid::LAVector>>();
+    step_multigrid::LAVector &inverse = data.preconditioner->get_vector();
     inverse.reinit(fine.locally_owned_dofs(), comm);
     copy_owned(inverse, S_diagonal);
     for (auto &value : inverse)
@@ -158,7 +163,7 @@ namespace dyncontact
 
     const std::shared_ptr<const Transfer> two_level = transfer;
     return [cycle, two_level](VectorType &y, const VectorType &x) {
-      Cycle &c = *cycle;
+      step_multigrid::Cycle &c = *cycle;
       copy_owned(c.r_fine, x);
       // pre-smoothing from zero
       c.smoother.vmult(c.y_fine, c.r_fine);
