@@ -365,6 +365,12 @@ main(int argc, char **argv)
            testing::scene_entries("Gmsh", "    set Dirichlet tags = 10:\n"),
          "Scene/Gmsh/Dirichlet tags: '10:' names no component after ':'"},
     {"gmsh",
+         "an empty item in Dirichlet tags",
+         gmsh("two_blocks.msh") +
+           testing::scene_entries("Gmsh", "    set Dirichlet tags = 10,,11: y\n"),
+         "Scene/Gmsh/Dirichlet tags has an empty item (two commas in a row, "
+             "or one alone) in '10,,11: y'"},
+    {"gmsh",
          "a Dirichlet component without its tag",
          gmsh("two_blocks.msh") +
            testing::scene_entries("Gmsh", "    set Dirichlet tags = : y\n"),

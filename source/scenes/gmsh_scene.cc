@@ -52,6 +52,11 @@ namespace dyncontact
       const std::string letters = dim == 2 ? "xy" : "xyz";
       for (const auto &item : Utilities::split_string_list(text, ','))
         {
+          AssertThrow(!item.empty(),
+                      ExcMessage("Scene/Gmsh/Dirichlet tags has an empty "
+                                 "item (two commas in a row, or one alone) "
+                                 "in '" +
+                                 text + "'."));
           const auto        colon = item.find(':');
           const std::string components =
             colon == std::string::npos ? letters : item.substr(colon + 1);
