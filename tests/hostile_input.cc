@@ -676,6 +676,14 @@ main(int argc, char **argv)
          "Initial strain with Fixed far end",
          bar("    set Initial strain = 0.01\n    set Fixed far end = true\n"),
          "cannot be combined"},
+    // (until 2026-11-29 the advice named Contact/Slave side, which such a
+    // scene refuses)
+    {"contact",
+         "a roller on the slave face of a pair of Contact pairs",
+         gmsh_pairs("2 : 1", "    set Dirichlet tags = 10, 12: y\n"),
+         "lie on a Dirichlet boundary: they get no contact rows, and the "
+             "master body would pass through them. Make the clamped side the "
+             "master (write the pair the other way round)"},
     // (until 2026-11-29 Slave side silently swapped the pair's sides)
     {"incompatible",
          "Contact/Slave side with Scene/Gmsh/Contact pairs",

@@ -384,20 +384,24 @@ namespace dyncontact
     refuse_clamped_slave_nodes(unsigned int       n_clamped,
                                const unsigned int pair_index,
                                const unsigned int slave,
+                               const bool         own_slave_side,
                                const MPI_Comm     comm)
     {
       n_clamped = Utilities::MPI::sum(n_clamped, comm);
       AssertThrow(n_clamped == 0,
-                  ExcMessage("Contact pair " + std::to_string(pair_index + 1) +
-                             ": " + std::to_string(n_clamped) +
-                             " slave nodes (side " + std::to_string(slave + 1) +
-                             ") lie on a Dirichlet boundary: they get no "
-                             "contact rows, and the master body would pass "
-                             "through them. Make the clamped side the master "
-                             "(Contact/Slave side = " +
-                             std::to_string(2 - slave) +
-                             "), or take the contact boundary out of the "
-                             "Dirichlet boundaries."));
+                  ExcMessage(
+                    "Contact pair " + std::to_string(pair_index + 1) + ": " +
+                    std::to_string(n_clamped) + " slave nodes (side " +
+                    std::to_string(slave + 1) +
+                    ") lie on a Dirichlet boundary: they get no "
+                    "contact rows, and the master body would pass "
+                    "through them. Make the clamped side the master "
+                    "(" +
+                    (own_slave_side ?
+                       std::string("write the pair the other way round") :
+                       "Contact/Slave side = " + std::to_string(2 - slave)) +
+                    "), or take the contact boundary out of the "
+                    "Dirichlet boundaries."));
     }
   } // namespace
 
@@ -664,7 +668,8 @@ namespace dyncontact
       }
     // (every rank stops, also those without such a node)
     stop_with_any_message(penetration, comm);
-    refuse_clamped_slave_nodes(n_clamped, pair_index, slave, comm);
+    refuse_clamped_slave_nodes(
+      n_clamped, pair_index, slave, pair.own_slave_side, comm);
     std::vector<types::global_dof_index> counts = {
       static_cast<types::global_dof_index>(nodes.size()),
       n_fixed,
