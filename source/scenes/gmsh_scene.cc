@@ -62,14 +62,15 @@ namespace dyncontact
             colon == std::string::npos ? letters : item.substr(colon + 1);
           // (the tag alone, as parse_tags reads it: one integer)
           const std::string tag_text = Utilities::trim(item.substr(0, colon));
-          AssertThrow(!tag_text.empty() &&
-                        tag_text.find(',') == std::string::npos,
+          AssertThrow(!tag_text.empty(),
                       ExcMessage("Scene/Gmsh/Dirichlet tags: '" + item +
                                  "' has no tag before ':'."));
           const unsigned int tag =
             *parse_tags(tag_text, "Dirichlet tags").begin();
-          std::array<bool, 3> chosen{{false, false, false}};
-          unsigned int        n = 0;
+          // (a tag given twice fixes what either item names)
+          auto &fixed_here =
+            fixed.try_emplace(tag, std::array<bool, 3>{}).first->second;
+          unsigned int n = 0;
           for (const char c : components)
             if (c != ' ')
               {
@@ -82,7 +83,7 @@ namespace dyncontact
                               "letters of '" +
                               letters +
                               "' (e.g. '11: y' fixes u_y on tag 11)."));
-                chosen[d] = true;
+                fixed_here[d] = true;
                 ++n;
               }
           AssertThrow(n > 0,
@@ -90,10 +91,6 @@ namespace dyncontact
                         "Scene/Gmsh/Dirichlet tags: '" + item +
                         "' names no component after ':' (letters of '" +
                         letters + "', or the tag alone for all)."));
-          auto &entry =
-            fixed.try_emplace(tag, std::array<bool, 3>{}).first->second;
-          for (unsigned int d = 0; d < 3; ++d)
-            entry[d] = entry[d] || chosen[d];
         }
       return fixed;
     }
@@ -564,11 +561,8 @@ namespace dyncontact
     prm.enter_subsection("Gmsh");
     mesh_file            = prm.get("Mesh file");
     dirichlet_components = parse_dirichlet_tags<dim>(prm.get("Dirichlet tags"));
-    dirichlet_tags.clear();
-    for (const auto &[tag, components] : dirichlet_components)
-      dirichlet_tags.insert(tag);
-    neumann_tags = parse_tags(prm.get("Neumann tags"), "Neumann tags");
-    traction     = parse_vector<dim>(prm.get("Neumann traction"),
+    neumann_tags         = parse_tags(prm.get("Neumann tags"), "Neumann tags");
+    traction             = parse_vector<dim>(prm.get("Neumann traction"),
                                  "Neumann traction",
                                  1e15,
                                  "Pa");
@@ -877,6 +871,9 @@ namespace dyncontact
                                       mesh_file);
     const auto face_tags =
       boundary_tags(tria, contact_tags, contact_entries, mesh_file);
+    std::set<unsigned int> dirichlet_tags;
+    for (const auto &[tag, components] : dirichlet_components)
+      dirichlet_tags.insert(tag);
     require_boundary_tags(face_tags,
                           "Dirichlet tags",
                           dirichlet_tags,

@@ -109,8 +109,7 @@ namespace dyncontact
     /// The bodies paired with the rigid obstacle, and the obstacle.
     std::set<unsigned int> obstacle_slaves;
     RigidObstacle<dim>     rigid_obstacle;
-    std::set<unsigned int> dirichlet_tags;
-    /// The displacement components that each Dirichlet tag fixes.
+    /// The Dirichlet tags, each with the displacement components it fixes.
     std::map<unsigned int, std::array<bool, 3>> dirichlet_components;
     std::set<unsigned int>                      neumann_tags;
     Tensor<1, dim>                              traction;
