@@ -31,23 +31,20 @@ namespace dyncontact
     , comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , time_integration(parsed<TimeIntegrationParameters>(prm))
-    , control(comm, time_step_controller)
+    , control(comm, pcout)
     , scheme(scheme_by_name(time_integration.scheme))
   {
     parameters.input_directory = input_directory;
     const auto output          = parsed<OutputParameters>(prm);
     checkpoints.parse_parameters(prm, parameters.output_directory, comm);
-    control.parse_parameters({time_integration.end_time,
-                              output.output_interval,
+    mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
+    mesh_adaptor->parse_parameters(prm);
+    control.parse_parameters(time_integration,
+                             {output.output_interval,
                               checkpoints.interval_in_steps(),
-                              checkpoints.interval_in_minutes()},
+                              checkpoints.interval_in_minutes(),
+                              mesh_adaptor->get_refinement_interval()},
                              scheme.is_static);
-    time_step_controller.parse_parameters(time_integration,
-                                          scheme.is_static,
-                                          control.get_end_time());
-    // adaptive steps end at the output times (fixed ones output at the
-    // first step at or after each)
-    time_step_controller.stop_at_multiples_of(output.output_interval);
     const typename SemiDiscreteSystem<dim>::Parameters system = {
       parameters.degree, time_integration.lumped_mass};
     problem = std::make_unique<DiscreteProblem<dim>>(
@@ -55,12 +52,9 @@ namespace dyncontact
       scheme,
       time_integration.numerical_dissipation,
       system,
-      time_step_controller,
       pcout,
       comm,
       parameters.serial_triangulation);
-    mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
-    mesh_adaptor->parse_parameters(prm);
     vtu_writer = std::make_unique<VtuWriter<dim>>();
     vtu_writer->parse_parameters(output);
     reference_states = std::make_unique<ReferenceStates<dim>>();
@@ -74,8 +68,7 @@ namespace dyncontact
       checkpoints.add_critical_parameter(scene->subsection() +
                                            "/(checksum of the input files)",
                                          scene->input_checksum());
-    reference_states->constrain(time_step_controller,
-                                mesh_adaptor->adapts_during_run());
+    reference_states->constrain(control, mesh_adaptor->adapts_during_run());
     mesh_adaptor->initialize_simulator(*this);
     vtu_writer->initialize_simulator(*this);
     reference_states->initialize_simulator(*this);
@@ -124,58 +117,13 @@ namespace dyncontact
   void
   Simulator<dim>::start()
   {
-    DiscreteProblem<dim> &p = *problem;
-    p.setup(*scene, *timer);
+    problem->setup(*scene, *timer);
     // before t = 0: refine the contact zone of the initial state
-    for (unsigned int k = 0; k < mesh_adaptor->n_initial_refinements(); ++k)
-      {
-        p.get_system().interpolate_initial_values(*scene, p.u, p.udot);
-        mesh_adaptor->mark_contact_zone();
-        if (!p.check_flagged_mesh_fits_in_memory(*scene,
-                                                 mesh_adaptor->memory_remedy(
-                                                   true),
-                                                 "the mesh refined at the "
-                                                 "contact zone"))
-          {
-            // (nothing more would change)
-            pcout << "   warning: Mesh refinement/Initial contact refinements "
-                     "= "
-                  << mesh_adaptor->n_initial_refinements() << ": "
-                  << (k == 0 ? std::string("no cell was refined") :
-                               "only " + std::to_string(k) +
-                                 " of them refined cells") +
-                       ": no slave node is in the contact zone at t = 0 "
-                       "(its gap below Mesh refinement/Contact zone/Distance "
-                       "or two cell sizes), as at the start of an impact "
-                       "across a gap, or its cells are at Mesh "
-                       "refinement/Maximum level (now "
-                  << mesh_adaptor->get_max_level() << ")." << std::endl;
-            break;
-          }
-        p.triangulation.execute_coarsening_and_refinement();
-        p.setup(*scene, *timer);
-      }
+    mesh_adaptor->refine_initial_contact_zone(*problem, *timer);
     // the slave sides of the mesh at t = 0 stay when the mesh adapts
-    p.get_contact().keep_slave_sides();
-    p.get_system().interpolate_initial_values(*scene, p.u, p.udot);
-    time_step_controller.reset(p.get_contact().get_rows().size());
-    p.make_integrator(*timer);
-    p.project_initial_penetration();
-    p.get_contact().refuse_initial_overlap(p.u);
-    {
-      TimerOutput::Scope t(*timer, "time step");
-      p.report =
-        p.get_integrator().initialize(time_step_controller.get_timestep(),
-                                      p.u,
-                                      p.udot);
-    }
-    AssertThrow(p.report.converged(),
-                ExcMessage("The initial velocity of " + scheme.name +
-                           " (eq. 12c) could not be computed: " +
-                           p.failure_cause(time_step_controller.get_timestep(),
-                                           p.report.failure()) +
-                           "."));
-    p.initial_report = p.report;
+    problem->get_contact().keep_slave_sides();
+    control.reset(problem->get_contact().get_rows().size());
+    problem->start(*scene, control.get_timestep(), *timer);
     record_statistics();
   }
 
@@ -212,8 +160,7 @@ namespace dyncontact
     const auto        state = checkpoints.read_state(dir);
     postprocessors->load(state);
     DiscreteProblem<dim> &p = *problem;
-    SemiDiscreteSystem<dim>::load_mesh(Checkpoints::mesh_file(dir),
-                                       p.triangulation);
+    p.load_mesh(Checkpoints::mesh_file(dir));
     p.get_contact().load(state);
     p.setup(*scene, *timer);
     if (state.count("contact_slave_sides") == 0)
@@ -222,32 +169,20 @@ namespace dyncontact
       p.get_contact().keep_slave_sides();
     VectorType              flags;
     std::vector<VectorType> controller_vectors(
-      time_step_controller.n_checkpoint_vectors(state));
-    std::vector<VectorType *> vectors = {&p.u, &p.udot, &flags};
-    for (VectorType &v : controller_vectors)
-      vectors.push_back(&v);
-    p.get_system().load_vectors(Checkpoints::mesh_file(dir), vectors);
-    control.load(state);
-    time_step_controller.load(state,
-                              p.get_contact().get_rows(),
-                              flags,
-                              controller_vectors);
+      control.n_checkpoint_vectors(state));
+    p.load(Checkpoints::mesh_file(dir), flags, controller_vectors);
+    control.load(state, p.get_contact().get_rows(), flags, controller_vectors);
     vtu_writer->load(state);
-    mesh_transfer.load(state);
+    mesh_adaptor->load(state);
     if (state.count("refinement_pending") &&
         state.at("refinement_pending") == "1")
       // the run ended on a step after which the mesh adapts: adapt now, as
       // the uninterrupted run did (the active sets refer to the old mesh)
       refine_mesh();
-    if (!p.has_integrator())
-      {
-        // no adaptation, or one that left the mesh as it was
-        p.make_integrator(*timer);
-        p.get_integrator().load_active_sets(flags);
-      }
-    if (time_step_controller.is_adaptive() &&
-        state.count("step_matrices_built"))
-      // those of the run before the checkpoint; make_integrator() above
+    // (unless the adaptation changed the mesh)
+    p.resume_integrator(control.get_timestep(), flags, *timer);
+    if (control.is_adaptive() && state.count("step_matrices_built"))
+      // those of the run before the checkpoint; the integrator made above
       // built one more, which counts
       p.set_n_earlier_step_matrices(
         std::stoul(state.at("step_matrices_built")));
@@ -266,7 +201,7 @@ namespace dyncontact
     TimerOutput::Scope t(*timer, "diagnostics");
     postprocessors->check_last_row();
     reference_states->write(control.get_time());
-    mesh_transfer = MeshTransfer();
+    mesh_adaptor->clear_record();
   }
 
 
@@ -275,12 +210,9 @@ namespace dyncontact
   void
   Simulator<dim>::refine_mesh()
   {
-    const auto [energy_change, violation] = problem->adapt_mesh(
-      *scene,
-      [this]() { mesh_adaptor->mark_cells(problem->triangulation); },
-      mesh_adaptor->memory_remedy(false),
-      *timer);
-    mesh_transfer.add(energy_change, violation);
+    if (mesh_adaptor->adapt(*problem, control.get_timestep(), *timer))
+      // the estimates and the rows' states refer to the old mesh
+      control.reset(problem->get_contact().get_rows().size());
   }
 
 
@@ -292,24 +224,18 @@ namespace dyncontact
     TimerOutput::Scope t(*timer, "checkpoint");
     const std::string  dir = checkpoints.begin(control.get_step());
     std::map<std::string, std::string> state;
-    DiscreteProblem<dim>              &p = *problem;
-    VectorType                         flags(p.u);
-    p.get_integrator().save_active_sets(flags);
-    const std::vector<VectorType> controller_vectors =
-      time_step_controller.save(state, p.get_contact().get_rows(), flags, p.u);
-    std::vector<const VectorType *> vectors = {&p.u, &p.udot, &flags};
-    for (const VectorType &v : controller_vectors)
-      vectors.push_back(&v);
-    p.get_system().save(Checkpoints::mesh_file(dir), vectors);
-    control.save(state);
+    DiscreteProblem<dim>              &p     = *problem;
+    VectorType                         flags = p.active_set_flags();
+    const std::vector<VectorType>      controller_vectors =
+      control.save(state, p.get_contact().get_rows(), flags, flags);
+    p.save(Checkpoints::mesh_file(dir), flags, controller_vectors);
     postprocessors->save(state);
-    mesh_transfer.save(state);
+    mesh_adaptor->save(state);
     vtu_writer->save(state);
     p.get_contact().save(state);
     // the last step of a run does not adapt the mesh: a resumed run does
     state["refinement_pending"] =
-      moments.last && mesh_adaptor->refinement_due(control.get_step()) ? "1" :
-                                                                         "0";
+      moments.last && control.refinement_due(control.get_step()) ? "1" : "0";
     state["step_matrices_built"] = std::to_string(p.n_step_matrices());
     checkpoints.finish(dir, state);
     return dir;
@@ -321,9 +247,9 @@ namespace dyncontact
   void
   Simulator<dim>::stop_after_failed_step(const bool finite)
   {
-    const StepReport &report = problem->report;
+    const StepReport &report = problem->get_report();
     const std::string cause =
-      problem->failure_cause(time_step_controller.get_timestep(),
+      problem->failure_cause(control.get_timestep(),
                              finite && !report.converged() ?
                                report.failure() :
                                "the solution is not finite");
@@ -331,8 +257,8 @@ namespace dyncontact
     if (control.get_step() == 0 && !checkpoints.resume())
       {
         // nothing to keep: the output directory stays as it was
-        message << std::setprecision(6) << "the first step (tau = "
-                << time_step_controller.get_timestep()
+        message << std::setprecision(6)
+                << "the first step (tau = " << control.get_timestep()
                 << " s) failed: " << cause
                 << ". Nothing was written. Try a smaller Time integration/Time "
                    "step, or set 'Time integration/Time step adaptation = "
@@ -342,9 +268,9 @@ namespace dyncontact
     const std::string dir = write_checkpoint();
     message << std::setprecision(6) << "step " << control.get_step() + 1
             << " (from t = " << control.get_time()
-            << " s, tau = " << time_step_controller.get_timestep()
-            << " s) failed: " << cause << ". The last good state (step "
-            << control.get_step() << ") is the checkpoint '" << dir
+            << " s, tau = " << control.get_timestep() << " s) failed: " << cause
+            << ". The last good state (step " << control.get_step()
+            << ") is the checkpoint '" << dir
             << "' (resume with 'Checkpointing/Resume = true'), or set 'Time "
                "integration/Time step adaptation = true'.";
     AssertThrow(false, ExcMessage(message.str()));
@@ -386,19 +312,16 @@ namespace dyncontact
     while (control.keep_going())
       {
         Timer      step_timer;
-        const auto outcome =
-          problem->take_step(control.get_time(), control.get_step(), *timer);
+        const auto outcome = control.advance(*problem, *timer);
         if (outcome.failed)
           stop_after_failed_step(outcome.finite);
-        moments = control.advance(outcome.step.tau, outcome.step.tau_changed);
-        moments.refinement =
-          mesh_adaptor->refinement_due(control.get_step()) && !moments.last;
+        moments = outcome.moments;
         step_timer.stop();
         step_wall_time = step_timer.wall_time();
         record_statistics();
         if (!outputs_open)
           open_outputs();
-        const StepReport &report = problem->report;
+        const StepReport &report = problem->get_report();
         progress->step(
           control.get_step(),
           control.get_time(),

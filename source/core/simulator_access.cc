@@ -1,5 +1,6 @@
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/core/simulator_access.h>
+#include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/postprocess/interface.h>
 
 namespace dyncontact
@@ -57,14 +58,14 @@ namespace dyncontact
   const Triangulation<dim> &
   SimulatorAccess<dim>::get_triangulation() const
   {
-    return simulator->problem->triangulation;
+    return simulator->problem->get_triangulation();
   }
 
   template <int dim>
   const Mapping<dim> &
   SimulatorAccess<dim>::get_mapping() const
   {
-    return simulator->problem->mapping;
+    return simulator->problem->get_mapping();
   }
 
   template <int dim>
@@ -79,13 +80,6 @@ namespace dyncontact
   SimulatorAccess<dim>::get_contact() const
   {
     return simulator->problem->get_contact();
-  }
-
-  template <int dim>
-  const TimeStepController &
-  SimulatorAccess<dim>::get_time_step_controller() const
-  {
-    return simulator->time_step_controller;
   }
 
   template <int dim>
@@ -106,7 +100,7 @@ namespace dyncontact
   const MeshTransfer &
   SimulatorAccess<dim>::get_mesh_transfer() const
   {
-    return simulator->mesh_transfer;
+    return simulator->mesh_adaptor->get_record();
   }
 
   template <int dim>
@@ -127,28 +121,28 @@ namespace dyncontact
   const VectorType &
   SimulatorAccess<dim>::get_solution() const
   {
-    return simulator->problem->u;
+    return simulator->problem->get_solution();
   }
 
   template <int dim>
   const VectorType &
   SimulatorAccess<dim>::get_velocity() const
   {
-    return simulator->problem->udot;
+    return simulator->problem->get_velocity();
   }
 
   template <int dim>
   const VectorType &
   SimulatorAccess<dim>::get_old_solution() const
   {
-    return simulator->problem->u_old;
+    return simulator->problem->get_old_solution();
   }
 
   template <int dim>
   const StepReport &
   SimulatorAccess<dim>::get_step_report() const
   {
-    return simulator->problem->report;
+    return simulator->problem->get_report();
   }
 
   template <int dim>

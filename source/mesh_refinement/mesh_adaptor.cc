@@ -9,7 +9,7 @@
 #include <dyncontact/base/triangulation.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/scenes/interface.h>
-#include <dyncontact/time_stepping/time_step_controller.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <cmath>
 #include <iomanip>
@@ -448,15 +448,11 @@ namespace dyncontact
     for (unsigned int body = 0; body < scene.n_bodies(); ++body)
       {
         const Material &material = scene.material(body);
-        wave_speed =
-          std::max(wave_speed,
-                   std::sqrt((material.lambda() + 2. * material.mu()) /
-                             material.density));
+        wave_speed = std::max(wave_speed, material.p_wave_speed());
       }
-    const TimeStepController &controller = this->get_time_step_controller();
-    const double              tau        = controller.is_adaptive() ?
-                                             controller.get_maximum_timestep() :
-                                             controller.get_timestep();
+    const SimulationControl &control = this->get_control();
+    const double tau = control.is_adaptive() ? control.get_maximum_timestep() :
+                                               control.get_timestep();
     return front_widening * wave_speed * tau * interval;
   }
 

@@ -7,10 +7,10 @@
 namespace dyncontact
 {
   void
-  MeshTransfer::add(const double energy, const double violation)
+  MeshTransfer::add(const double energy, const double transfer_penetration)
   {
     energy_change += energy;
-    penetration = std::max(penetration, violation);
+    penetration = std::max(penetration, transfer_penetration);
   }
 
 
@@ -29,9 +29,9 @@ namespace dyncontact
   MeshTransfer::load(const std::map<std::string, std::string> &state)
   {
     std::istringstream s(state.at("mesh_transfer"));
-    std::string        energy, violation;
-    s >> energy >> violation;
+    std::string        energy, transfer_penetration;
+    s >> energy >> transfer_penetration;
     energy_change = std::stod(energy);
-    penetration   = std::stod(violation);
+    penetration   = std::stod(transfer_penetration);
   }
 } // namespace dyncontact

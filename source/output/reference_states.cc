@@ -4,7 +4,7 @@
 #include <dyncontact/base/collective_errors.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/output/reference_states.h>
-#include <dyncontact/time_stepping/time_step_controller.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <cmath>
 #include <filesystem>
@@ -79,8 +79,8 @@ namespace dyncontact
 
   template <int dim>
   void
-  ReferenceStates<dim>::constrain(TimeStepController &controller,
-                                  const bool          adaptive_mesh) const
+  ReferenceStates<dim>::constrain(SimulationControl &control,
+                                  const bool         adaptive_mesh) const
   {
     if (!write_states && !compare_states)
       return;
@@ -89,7 +89,7 @@ namespace dyncontact
                   "Reference solutions need the same mesh in both "
                   "runs: they cannot be combined with adaptive "
                   "meshes (Mesh refinement/Refinement interval > 0)."));
-    controller.require_multiples_of(interval, "Reference solution/Interval");
+    control.require_multiples_of(interval, "Reference solution/Interval");
   }
 
 

@@ -9,7 +9,6 @@
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
 #include <dyncontact/time_stepping/simulation_control.h>
-#include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <cerrno>
 #include <cmath>
@@ -30,8 +29,6 @@ namespace dyncontact
     const ContactSetup<dim>       &contact    = this->get_contact();
     const TimeIntegrator          &integrator = this->get_integrator();
     const SimulationControl       &control    = this->get_control();
-    const TimeStepController      &time_step_controller =
-      this->get_time_step_controller();
     // DoFs per body
     std::vector<types::global_dof_index> body_dofs;
     for (const auto n : system.n_locally_owned_body_dofs())
@@ -83,16 +80,14 @@ namespace dyncontact
       }
     if (integrator.get_scheme().is_static)
       text << "static problem (one solve)";
-    else if (time_step_controller.is_adaptive())
-      text << scheme << ", adaptive tau in ["
-           << time_step_controller.get_minimum_timestep() << ", "
-           << time_step_controller.get_maximum_timestep() << "] s, now "
-           << time_step_controller.get_timestep()
-           << " s, from t = " << control.get_time() << " to "
-           << control.get_end_time() << " s";
+    else if (control.is_adaptive())
+      text << scheme << ", adaptive tau in [" << control.get_minimum_timestep()
+           << ", " << control.get_maximum_timestep() << "] s, now "
+           << control.get_timestep() << " s, from t = " << control.get_time()
+           << " to " << control.get_end_time() << " s";
     else
       {
-        const double tau     = time_step_controller.get_timestep();
+        const double tau     = control.get_timestep();
         const double n_steps = control.steps_to_end(tau);
         const double last    = control.get_time() + n_steps * tau;
         text << scheme << ", tau = " << tau << " s, " << n_steps
@@ -119,10 +114,9 @@ namespace dyncontact
     const std::function<std::string(const SummaryInput &)> &statistics_lines)
     const
   {
-    const TimeIntegrator     &integrator = this->get_integrator();
-    const TimeStepController &time_step_controller =
-      this->get_time_step_controller();
-    SummaryInput input;
+    const TimeIntegrator    &integrator = this->get_integrator();
+    const SimulationControl &control    = this->get_control();
+    SummaryInput             input;
     input.dim       = dim;
     input.is_static = integrator.get_scheme().is_static;
     input.energy_tolerance =
@@ -133,10 +127,10 @@ namespace dyncontact
       this->get_timer().get_summary_data(TimerOutput::total_wall_time);
     input.section_calls =
       this->get_timer().get_summary_data(TimerOutput::n_calls);
-    input.adaptive_time_steps = time_step_controller.is_adaptive();
-    input.located_events      = time_step_controller.n_located_events();
-    input.repeated_steps      = time_step_controller.n_repeated_steps();
-    input.passed_output_times = time_step_controller.n_passed_output_times();
+    input.adaptive_time_steps = control.is_adaptive();
+    input.located_events      = control.n_located_events();
+    input.repeated_steps      = control.n_repeated_steps();
+    input.passed_output_times = control.n_passed_output_times();
     input.step_matrices       = step_matrices;
     input.preconditioner      = integrator.preconditioner_name();
     input.matrix_free         = integrator.matrix_free();

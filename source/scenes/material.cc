@@ -18,6 +18,14 @@ namespace dyncontact
   }
 
 
+
+  double
+  Material::p_wave_speed() const
+  {
+    return std::sqrt((lambda() + 2. * mu()) / density);
+  }
+
+
   void
   Material::declare_parameters(ParameterHandler  &prm,
                                const std::string &subsection)

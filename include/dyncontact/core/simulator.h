@@ -7,12 +7,10 @@
 #include <dyncontact/base/global_parameters.h>
 #include <dyncontact/base/statistics.h>
 #include <dyncontact/core/simulator_access.h>
-#include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/output/checkpoint.h>
 #include <dyncontact/output/run_report.h>
-#include <dyncontact/time_stepping/discrete_problem.h>
+#include <dyncontact/problem/discrete_problem.h>
 #include <dyncontact/time_stepping/simulation_control.h>
-#include <dyncontact/time_stepping/time_step_controller.h>
 
 #include <memory>
 #include <string>
@@ -34,11 +32,13 @@ namespace dyncontact
    * resumes) the DiscreteProblem and steps it; after each step it asks the
    * components for the step's moments and acts on them:
    *
-   * - TimeStepController: tau, its estimates and events, trial steps;
-   * - SimulationControl: time, output and checkpoint moments, the end;
+   * - SimulationControl: time, tau (its estimates and events), the trial
+   *   steps, the moments of output, checkpoints and mesh adaptation, the
+   *   end;
    * - DiscreteProblem: mesh, system, contact rows, integrator, state;
    * - Postprocess::Manager: the statistics (plugins);
-   * - MeshAdaptor: when and where the mesh adapts (criteria are plugins);
+   * - MeshAdaptor: where the mesh adapts (criteria are plugins), the
+   *   adaptation and its record;
    * - VtuWriter, ReferenceStates, Checkpoints, RunReport: output.
    *
    * Components read the state through SimulatorAccess; each subsection of
@@ -103,9 +103,7 @@ namespace dyncontact
     ConditionalOStream           pcout;
     std::unique_ptr<TimerOutput> timer;
 
-    TimeIntegrationParameters time_integration;
-    /// tau (declared before the control, which reads it)
-    TimeStepController                    time_step_controller;
+    TimeIntegrationParameters             time_integration;
     SimulationControl                     control;
     const Scheme                         &scheme;
     std::unique_ptr<DiscreteProblem<dim>> problem;
@@ -113,10 +111,8 @@ namespace dyncontact
 
     /// What follows the present step (output, refinement, checkpoint).
     StepMoments moments;
-    /// What the transfers to adapted meshes did since the last row.
-    MeshTransfer mesh_transfer;
-    double       step_wall_time = 0.;
-    bool         outputs_open   = false;
+    double      step_wall_time = 0.;
+    bool        outputs_open   = false;
 
     std::unique_ptr<MeshAdaptor<dim>>          mesh_adaptor;
     std::unique_ptr<Postprocess::Manager<dim>> postprocessors;

@@ -27,7 +27,6 @@ namespace dyncontact
   class ReferenceStates;
   class TimeIntegrator;
   class SimulationControl;
-  class TimeStepController;
   struct Statistics;
   struct StepReport;
   struct StepMoments;
@@ -91,13 +90,10 @@ namespace dyncontact
     const TimeIntegrator &
     get_integrator() const;
 
-    /// Step number, time, tau.
+    /// Step number, time, tau (its bounds, its counts of events and
+    /// retries).
     const SimulationControl &
     get_control() const;
-
-    /// The owner of tau (its bounds, its counts of events and retries).
-    const TimeStepController &
-    get_time_step_controller() const;
 
     /// The statistics table so far (every row on every rank).
     const Statistics &

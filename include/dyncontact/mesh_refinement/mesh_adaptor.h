@@ -3,6 +3,7 @@
 
 #include <dyncontact/core/simulator_access.h>
 #include <dyncontact/mesh_refinement/interface.h>
+#include <dyncontact/mesh_refinement/mesh_transfer.h>
 
 #include <map>
 #include <memory>
@@ -16,6 +17,9 @@ namespace dealii
 
 namespace dyncontact
 {
+  template <int dim>
+  class DiscreteProblem;
+
   /**
    * When and where the mesh adapts during the dynamics (subsection "Mesh
    * refinement"): every "Refinement interval" steps the cells are marked by
@@ -29,8 +33,12 @@ namespace dyncontact
    * next adaptation, times the adaptations a cell needs to reach the
    * maximum level.
    * Before t = 0 the contact zone is refined "Initial contact refinements"
-   * times. What a transfer of the state did is the simulator's
-   * MeshTransfer record.
+   * times.
+   *
+   * The one place of mesh adaptation: it marks the cells, has the
+   * DiscreteProblem refine its mesh and transfer its state (adapt()), and
+   * keeps the record of what the transfers did (MeshTransfer) until the
+   * next statistics row.
    */
   template <int dim>
   class MeshAdaptor : public SimulatorAccess<dim>
@@ -60,11 +68,13 @@ namespace dyncontact
       return interval > 0;
     }
 
-    /// Whether the mesh adapts after this step.
-    bool
-    refinement_due(const unsigned int step) const
+    /// Refinement interval (steps; 0: the mesh does not adapt during the
+    /// run), for SimulationControl, which decides the steps after which it
+    /// adapts.
+    unsigned int
+    get_refinement_interval() const
     {
-      return interval > 0 && step % interval == 0;
+      return interval;
     }
 
     unsigned int
@@ -77,6 +87,45 @@ namespace dyncontact
     get_max_level() const
     {
       return max_level;
+    }
+
+    /// Before t = 0: refines the contact zone of @p problem's initial
+    /// state "Initial contact refinements" times (fewer, with a warning,
+    /// where no cell is flagged), setting the problem up on each mesh.
+    void
+    refine_initial_contact_zone(DiscreteProblem<dim> &problem,
+                                TimerOutput          &timer);
+
+    /// After a step whose moments say so: marks the cells of @p problem's
+    /// mesh, has it adapt its mesh (with an integrator for the step @p tau)
+    /// and records what the transfer did. Returns whether the mesh changed.
+    bool
+    adapt(DiscreteProblem<dim> &problem, const double tau, TimerOutput &timer);
+
+    /// What the transfers did since the last clear_record().
+    const MeshTransfer &
+    get_record() const
+    {
+      return record;
+    }
+
+    /// After each statistics row.
+    void
+    clear_record()
+    {
+      record = MeshTransfer();
+    }
+
+    /// The record, for a checkpoint.
+    void
+    save(std::map<std::string, std::string> &state) const
+    {
+      record.save(state);
+    }
+    void
+    load(const std::map<std::string, std::string> &state)
+    {
+      record.load(state);
     }
 
     /// Flags the cells of @p triangulation by the criteria (collective).
@@ -123,6 +172,8 @@ namespace dyncontact
     std::vector<std::unique_ptr<MeshRefinement::Interface<dim>>> criteria;
     /// The contact-zone criterion of the refinement before t = 0.
     std::unique_ptr<MeshRefinement::Interface<dim>> contact_zone;
+    /// get_record()
+    MeshTransfer record;
   };
 } // namespace dyncontact
 

@@ -8,21 +8,21 @@ namespace dyncontact
 {
   /**
    * What the transfers of the state to adapted meshes did since the last
-   * statistics row: an event the simulator publishes after each adaptation
-   * and clears after each row; statistics read it through
+   * statistics row: MeshAdaptor's record, which it adds to after each
+   * adaptation and clears after each row; statistics read it through
    * SimulatorAccess::get_mesh_transfer().
    */
   struct MeshTransfer
   {
     /// Energy change of the transfers (J).
     double energy_change = 0.;
-    /// Largest violation of K_h they left before the projection (m).
+    /// Largest penetration of K_h they left before the projection (m).
     double penetration = 0.;
 
-    /// One transfer changed the energy by @p energy and left the violation
-    /// @p violation.
+    /// One transfer changed the energy by @p energy and left the
+    /// penetration @p transfer_penetration.
     void
-    add(const double energy, const double violation);
+    add(const double energy, const double transfer_penetration);
 
     void
     save(std::map<std::string, std::string> &state) const;

@@ -55,7 +55,7 @@ namespace dyncontact
     /// @p adaptive_mesh) and steps that reach their times (@p controller
     /// stops there). Nothing if the run neither writes nor compares.
     void
-    constrain(TimeStepController &controller, const bool adaptive_mesh) const;
+    constrain(SimulationControl &control, const bool adaptive_mesh) const;
 
     /// Whether this run compares with reference states.
     bool

@@ -48,6 +48,10 @@ namespace dyncontact
     double
     bar_wave_speed() const;
 
+    /// Speed of pressure waves, sqrt((lambda + 2 mu)/rho), in m/s.
+    double
+    p_wave_speed() const;
+
 
     /// Declares the subsection (by default "Material") with its entries.
     static void

@@ -285,7 +285,7 @@ namespace dyncontact
   /**
    * A scheme with its operators on one mesh: the object the time loop steps
    * with. It stores no time step: each step is handed its tau (the
-   * TimeStepController's), and the operators keep the step matrices of the
+   * SimulationControl's), and the operators keep the step matrices of the
    * last tau levels. Rebuilt when the mesh changes (the active sets carry
    * over through warm_start()).
    */

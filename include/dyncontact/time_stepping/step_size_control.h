@@ -11,7 +11,7 @@ namespace dyncontact
 {
   /**
    * The estimates of 'Time step control = adaptive' (doc/running.md,
-   * "Adaptive time steps"); TimeStepController owns tau and acts on them.
+   * "Adaptive time steps"); SimulationControl owns tau and acts on them.
    *
    * Event location. The complementarity of a contact row changes sign
    * inside a step when the row comes into contact (gap g_p - (C u)_p from
@@ -47,7 +47,7 @@ namespace dyncontact
     /// predicted, over all ranks: in (0, 1] inside the step, in (1, 2) in
     /// the step after it (which N-CS++'s projection looks at); 2 if none is
     /// predicted after the first hundredth of the step. The
-    /// TimeStepController decides where the step ends.
+    /// SimulationControl decides where the step ends.
     static double
     event_fraction(const StepOperators       &operators,
                    const ContactRowOperator  &row_operator,

@@ -16,8 +16,8 @@ namespace dyncontact
    * components that use them are handed the values: the scheme to
    * TimeIntegrator::scheme_by_name(), Mass matrix to SemiDiscreteSystem,
    * Numerical dissipation to DiscreteProblem (and through it to the
-   * integrator's StepOperators), End time to SimulationControl, the time step
-   * and its control to TimeStepController (which checks them).
+   * integrator's StepOperators), End time, the time step and its control
+   * to SimulationControl (which checks them).
    */
   struct TimeIntegrationParameters
   {

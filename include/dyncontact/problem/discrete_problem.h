@@ -1,5 +1,5 @@
-#ifndef dyncontact_time_stepping_discrete_problem_h
-#define dyncontact_time_stepping_discrete_problem_h
+#ifndef dyncontact_problem_discrete_problem_h
+#define dyncontact_problem_discrete_problem_h
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -8,7 +8,7 @@
 
 #include <dyncontact/contact/active_set_solver.h>
 #include <dyncontact/time_stepping/integrators.h>
-#include <dyncontact/time_stepping/time_step_controller.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 #include <functional>
 #include <memory>
@@ -29,12 +29,14 @@ namespace dyncontact
    * What a step solves, on the current mesh: the triangulation, its
    * semi-discrete system (DoFs, constraints, M, A, B, f), the contact rows,
    * the scheme's integrator, and the state: (u, udot), and (u_old,
-   * udot_old) where the present step started from. The Simulator sets it
-   * up, steps it and adapts its mesh; statistics read it through
-   * SimulatorAccess. tau is the TimeStepController's.
+   * udot_old) where the present step started from. The state is its own:
+   * the Simulator starts it (or loads it from a checkpoint),
+   * SimulationControl asks it for the trial steps of each step
+   * (SteppedProblem) and hands it tau, MeshAdaptor adapts its mesh, and
+   * statistics read it through SimulatorAccess.
    */
   template <int dim>
-  class DiscreteProblem
+  class DiscreteProblem : public SteppedProblem
   {
   public:
     /// Reads the parameters of the contact rows and the active-set solver
@@ -48,7 +50,6 @@ namespace dyncontact
       const Scheme                                       &scheme,
       const double                                        numerical_dissipation,
       const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
-      TimeStepController                                 &time_step_controller,
       const ConditionalOStream                           &pcout,
       const MPI_Comm                                      comm,
       const bool serial_triangulation = false);
@@ -73,43 +74,99 @@ namespace dyncontact
           const bool        adapting = false);
 
     /// The step matrix, its preconditioner and the active-set solvers for
-    /// the controller's tau, timed as 'setup: step matrix and
-    /// preconditioner', or 'adaptation: step matrix and preconditioner'.
+    /// @p tau, timed as 'setup: step matrix and preconditioner', or
+    /// 'adaptation: step matrix and preconditioner'.
     void
-    make_integrator(TimerOutput &timer, const bool adapting = false);
+    make_integrator(const double tau,
+                    TimerOutput &timer,
+                    const bool   adapting = false);
 
-    /// An initially penetrating u (allowed only with 'Initial penetration
-    /// = project'): its M-projection onto K_h, with a warning.
+    /// (u, udot) of the scene's initial values (on the present mesh).
     void
-    project_initial_penetration();
+    interpolate_initial_values(const Scene<dim> &scene);
 
-    /// What take_step() did.
-    struct Outcome
+    /// The initial state of a new run: the scene's initial values, the
+    /// integrator for @p tau, an initially penetrating u (allowed only with
+    /// 'Initial penetration = project') projected onto K_h with a warning,
+    /// an overlap of unpaired bodies refused, and the scheme's initial
+    /// velocity (eq. 12c), timed as 'time step'; stops with a message if it
+    /// cannot be computed.
+    void
+    start(const Scene<dim> &scene, const double tau, TimerOutput &timer);
+
+    /// @name Checkpoints
+    /// @{
+
+    /// The integrator's active sets as a nodal vector laid out as u
+    /// (TimeIntegrator::save_active_sets()).
+    VectorType
+    active_set_flags() const;
+
+    /// Writes the mesh and (u, udot, @p flags, @p more) to @p mesh_file.
+    void
+    save(const std::string             &mesh_file,
+         const VectorType              &flags,
+         const std::vector<VectorType> &more);
+
+    /// Loads the mesh of @p mesh_file onto the coarse mesh (before
+    /// setup()).
+    void
+    load_mesh(const std::string &mesh_file);
+
+    /// Reads (u, udot, @p flags, @p more) of @p mesh_file on the set-up
+    /// mesh (as many vectors as @p more has).
+    void
+    load(const std::string       &mesh_file,
+         VectorType              &flags,
+         std::vector<VectorType> &more);
+
+    /// The integrator for @p tau with the active sets of @p flags, unless
+    /// one was made since (by a mesh adaptation after loading).
+    void
+    resume_integrator(const double      tau,
+                      const VectorType &flags,
+                      TimerOutput      &timer);
+    /// @}
+
+    /// @name The trial steps SimulationControl::advance() asks for
+    /// @{
+    void
+    begin_step() override;
+    const StepReport &
+    try_step(const double tau,
+             const bool   level_step,
+             TimerOutput &timer) override;
+    bool
+    trial_is_finite() const override;
+    void
+    restore(const bool from_trial) override;
+    TrialStep
+    trial() override;
+    /// @}
+
+    /// What adapt_mesh() did.
+    struct Adaptation
     {
-      TimeStepController::AcceptedStep step;
-      bool                             failed = false;
-      /// of a failed trial: whether its solution was finite
-      bool finite = true;
+      /// whether any cell was refined or coarsened (else nothing changed)
+      bool changed = false;
+      /// the energy change of the transfer (J)
+      double energy_change = 0.;
+      /// the largest penetration of the new K_h that the transfer left and
+      /// that was projected away (m)
+      double penetration = 0.;
     };
-    /// One step from (u, udot) = (u_old, udot_old) at time @p time (step
-    /// @p step): trial steps with the TimeStepController's tau until it
-    /// accepts one (it retries after a failed solve, a located contact
-    /// event, an error estimate above the tolerance). A failed trial that
-    /// cannot be retried leaves the state as it was and reports failed.
-    Outcome
-    take_step(const double time, const unsigned int step, TimerOutput &timer);
 
     /// Refines and coarsens the cells @p mark_cells marks, transfers (u,
-    /// udot) and sets up everything anew; returns the energy change of the
-    /// transfer and the largest violation of the new K_h that was projected
-    /// away. If no cell is marked (on any rank), nothing changes and both
-    /// are zero. A refinement whose growth would not fit into the memory
+    /// udot), sets up everything anew with the step @p tau and projects u
+    /// back onto the new K_h. If no cell is marked (on any rank), nothing
+    /// changes. A refinement whose growth would not fit into the memory
     /// available is refused with a message naming @p remedy (the
     /// parameters to reduce) before the mesh changes.
-    std::pair<double, double>
+    Adaptation
     adapt_mesh(const Scene<dim>            &scene,
                const std::function<void()> &mark_cells,
                const std::string           &remedy,
+               const double                 tau,
                TimerOutput                 &timer);
 
     /// Stops with a message naming @p what (the mesh) and @p remedy if the
@@ -137,6 +194,35 @@ namespace dyncontact
     void
     swap_with_initial_state();
 
+    /// @name The read-only view (SimulatorAccess)
+    /// @{
+
+    /// u^n and udot^n after the last step.
+    const VectorType &
+    get_solution() const
+    {
+      return u;
+    }
+    const VectorType &
+    get_velocity() const
+    {
+      return udot;
+    }
+    /// u^{n-1}: the displacement before the last step.
+    const VectorType &
+    get_old_solution() const
+    {
+      return u_old;
+    }
+    /// What the last trial step (or the initial velocity, at step 0)
+    /// reported.
+    const StepReport &
+    get_report() const
+    {
+      return report;
+    }
+    /// @}
+
     /// Step matrices S built so far, by all integrators.
     unsigned int
     n_step_matrices() const;
@@ -146,22 +232,27 @@ namespace dyncontact
     void
     set_n_earlier_step_matrices(const unsigned int n);
 
-  private:
-    std::unique_ptr<Triangulation<dim>> triangulation_storage;
-
-  public:
     /// p4est's parallel::distributed::Triangulation, or with
     /// Mesh/Triangulation = serial deal.II's Triangulation (one rank).
-    Triangulation<dim>  &triangulation;
-    const MappingQ1<dim> mapping;
+    const Triangulation<dim> &
+    get_triangulation() const
+    {
+      return *triangulation;
+    }
+    /// For the refinement flags of a mesh adaptation (MeshAdaptor).
+    Triangulation<dim> &
+    get_triangulation()
+    {
+      return *triangulation;
+    }
+    const Mapping<dim> &
+    get_mapping() const
+    {
+      return mapping;
+    }
 
     const SemiDiscreteSystem<dim> &
     get_system() const
-    {
-      return *system;
-    }
-    SemiDiscreteSystem<dim> &
-    get_system()
     {
       return *system;
     }
@@ -187,17 +278,13 @@ namespace dyncontact
     {
       return *integrator;
     }
-    TimeIntegrator &
-    get_integrator()
-    {
-      return *integrator;
-    }
-
-    VectorType u, udot, u_old, udot_old;
-    /// the last trial step's, and the initial velocity's (eq. 12c)
-    StepReport report, initial_report;
 
   private:
+    /// An initially penetrating u: its M-projection onto K_h, with a
+    /// warning.
+    void
+    project_initial_penetration();
+
     /// The static scheme: stops with a message naming each body that
     /// neither a Dirichlet boundary nor its load holds
     /// (unheld_rigid_motions()).
@@ -219,12 +306,13 @@ namespace dyncontact
       return system->has_sparsity_pattern() || coarse_system;
     }
 
-    const MPI_Comm            comm;
-    const ConditionalOStream &pcout;
-    const Scheme             &scheme;
+    const std::unique_ptr<Triangulation<dim>> triangulation;
+    const MappingQ1<dim>                      mapping;
+    const MPI_Comm                            comm;
+    const ConditionalOStream                  pcout;
+    const Scheme                             &scheme;
     /// Time integration/Numerical dissipation theta, for the integrator.
     const double                             numerical_dissipation;
-    TimeStepController                      &time_step_controller;
     ActiveSetSolver::Parameters              solver_parameters;
     std::unique_ptr<SemiDiscreteSystem<dim>> system;
     /// 'Contact solver/Preconditioner = multigrid': the same mesh with
@@ -234,6 +322,14 @@ namespace dyncontact
     std::unique_ptr<ContactSetup<dim>>       contact;
     std::unique_ptr<TimeIntegrator>          integrator;
     bool                                     warned_inertia = false;
+
+    // the state
+    VectorType u, udot, u_old, udot_old;
+    /// the last trial step's, and the initial velocity's (eq. 12c)
+    StepReport report, initial_report;
+    /// the active sets (displacement, projection) at the start of the
+    /// present step
+    std::pair<std::vector<char>, std::vector<char>> start_sets;
     /// built by the integrators of earlier meshes
     unsigned int n_earlier_step_matrices = 0;
   };

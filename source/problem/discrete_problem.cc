@@ -7,8 +7,8 @@
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/discretization/rigid_motions.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/problem/discrete_problem.h>
 #include <dyncontact/scenes/interface.h>
-#include <dyncontact/time_stepping/discrete_problem.h>
 #include <dyncontact/time_stepping/step_multigrid.h>
 
 #include <algorithm>
@@ -24,17 +24,14 @@ namespace dyncontact
     const Scheme                                       &scheme,
     const double                                        numerical_dissipation,
     const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
-    TimeStepController                                 &time_step_controller,
     const ConditionalOStream                           &pcout,
     const MPI_Comm                                      comm,
     const bool                                          serial_triangulation)
-    : triangulation_storage(make_triangulation<dim>(serial_triangulation, comm))
-    , triangulation(*triangulation_storage)
+    : triangulation(make_triangulation<dim>(serial_triangulation, comm))
     , comm(comm)
     , pcout(pcout)
     , scheme(scheme)
     , numerical_dissipation(numerical_dissipation)
-    , time_step_controller(time_step_controller)
   {
     AssertThrow(
       !serial_triangulation || Utilities::MPI::n_mpi_processes(comm) == 1,
@@ -111,7 +108,7 @@ namespace dyncontact
   {
     TimerOutput::Scope t(timer, "setup: mesh");
     dyncontact::build_mesh(scene,
-                           triangulation,
+                           *triangulation,
                            n_refinements,
                            system->get_fe().degree,
                            coarse_only);
@@ -130,14 +127,14 @@ namespace dyncontact
       TimerOutput::Scope t(timer,
                            adapting ? "adaptation: DoFs and sparsity" :
                                       "setup: DoFs and sparsity");
-      system->setup(triangulation, scene);
+      system->setup(*triangulation, scene);
       if (coarse_system)
-        coarse_system->setup(triangulation, scene);
+        coarse_system->setup(*triangulation, scene);
       // the dynamic sparsity pattern's rows; without a pattern nothing
       // large was freed (and the trim costs 7 % of a small adaptation)
       if (matrices_assembled())
         release_freed_memory();
-      pcout << "   cells: " << triangulation.n_global_active_cells()
+      pcout << "   cells: " << triangulation->n_global_active_cells()
             << ", DoFs: " << system->get_dof_handler().n_dofs() << std::endl;
     }
     {
@@ -172,7 +169,7 @@ namespace dyncontact
         contacts.push_back(pair.second_side);
       }
     contacts.push_back(scene.contact_boundary_ids());
-    const auto ids = boundary_ids_of_bodies(triangulation, scene.n_bodies());
+    const auto ids = boundary_ids_of_bodies(*triangulation, scene.n_bodies());
     for (unsigned int b = 0; b < unheld.size(); ++b)
       {
         unsigned int n_surfaces = 0;
@@ -205,7 +202,9 @@ namespace dyncontact
 
   template <int dim>
   void
-  DiscreteProblem<dim>::make_integrator(TimerOutput &timer, const bool adapting)
+  DiscreteProblem<dim>::make_integrator(const double tau,
+                                        TimerOutput &timer,
+                                        const bool   adapting)
   {
     TimerOutput::Scope t(timer,
                          adapting ?
@@ -229,7 +228,7 @@ namespace dyncontact
     integrator =
       std::make_unique<TimeIntegrator>(scheme,
                                        numerical_dissipation,
-                                       time_step_controller.get_timestep(),
+                                       tau,
                                        matrices,
                                        solver_parameters,
                                        system->locally_owned_dofs(),
@@ -261,6 +260,100 @@ namespace dyncontact
 
   template <int dim>
   void
+  DiscreteProblem<dim>::interpolate_initial_values(const Scene<dim> &scene)
+  {
+    system->interpolate_initial_values(scene, u, udot);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::start(const Scene<dim> &scene,
+                              const double      tau,
+                              TimerOutput      &timer)
+  {
+    interpolate_initial_values(scene);
+    make_integrator(tau, timer);
+    project_initial_penetration();
+    contact->refuse_initial_overlap(u);
+    {
+      TimerOutput::Scope t(timer, "time step");
+      report = integrator->initialize(tau, u, udot);
+    }
+    AssertThrow(report.converged(),
+                ExcMessage("The initial velocity of " + scheme.name +
+                           " (eq. 12c) could not be computed: " +
+                           failure_cause(tau, report.failure()) + "."));
+    initial_report = report;
+  }
+
+
+
+  template <int dim>
+  VectorType
+  DiscreteProblem<dim>::active_set_flags() const
+  {
+    VectorType flags(u);
+    integrator->save_active_sets(flags);
+    return flags;
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::save(const std::string             &mesh_file,
+                             const VectorType              &flags,
+                             const std::vector<VectorType> &more)
+  {
+    std::vector<const VectorType *> vectors = {&u, &udot, &flags};
+    for (const VectorType &v : more)
+      vectors.push_back(&v);
+    system->save(mesh_file, vectors);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::load_mesh(const std::string &mesh_file)
+  {
+    SemiDiscreteSystem<dim>::load_mesh(mesh_file, *triangulation);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::load(const std::string       &mesh_file,
+                             VectorType              &flags,
+                             std::vector<VectorType> &more)
+  {
+    std::vector<VectorType *> vectors = {&u, &udot, &flags};
+    for (VectorType &v : more)
+      vectors.push_back(&v);
+    system->load_vectors(mesh_file, vectors);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::resume_integrator(const double      tau,
+                                          const VectorType &flags,
+                                          TimerOutput      &timer)
+  {
+    if (integrator)
+      return;
+    make_integrator(tau, timer);
+    integrator->load_active_sets(flags);
+  }
+
+
+
+  template <int dim>
+  void
   DiscreteProblem<dim>::project_initial_penetration()
   {
     double largest = 0.;
@@ -279,67 +372,65 @@ namespace dyncontact
 
 
   template <int dim>
-  typename DiscreteProblem<dim>::Outcome
-  DiscreteProblem<dim>::take_step(const double       time,
-                                  const unsigned int step,
-                                  TimerOutput       &timer)
+  void
+  DiscreteProblem<dim>::begin_step()
   {
     copy_with_layout(u_old, u);
     copy_with_layout(udot_old, udot);
-    // where the step starts from: its active sets
-    const auto start_sets = integrator->active_sets();
-    time_step_controller.begin_step(time);
-    while (true)
-      {
-        const double tau = time_step_controller.trial_timestep();
-        {
-          TimerOutput::Scope t(timer, "time step");
-          report = integrator->step(tau,
-                                    !time_step_controller.step_is_shortened(),
-                                    u,
-                                    udot);
-        }
-        check_inertia();
-        const bool finite =
-          std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
-        if (!report.converged() || !finite)
-          {
-            // back to the last good state, warm started from the failed
-            // trial's active sets: retry with a smaller step, or stop
-            const auto active = integrator->active_sets();
-            u                 = u_old;
-            udot              = udot_old;
-            if (!time_step_controller.retry_after_failure())
-              return {{}, true, finite};
-            pcout << "   warning: step " << step + 1 << " (t = " << time
-                  << " s) failed; retrying with tau = "
-                  << time_step_controller.get_timestep() << " s" << std::endl;
-            integrator->warm_start(active.first, active.second);
-            continue;
-          }
-        if (time_step_controller.is_adaptive())
-          {
-            TimerOutput::Scope t(timer, "time step control");
-            if (time_step_controller.judge(integrator->get_operators(),
-                                           contact->get_row_operator(),
-                                           start_sets.first,
-                                           u_old,
-                                           udot_old,
-                                           u,
-                                           udot,
-                                           report,
-                                           comm) ==
-                TimeStepController::Verdict::retry)
-              {
-                // from the start of the step, with its active sets
-                u    = u_old;
-                udot = udot_old;
-                integrator->warm_start(start_sets.first, start_sets.second);
-                continue;
-              }
-          }
-        return {time_step_controller.accept(), false, true};
-      }
+    start_sets = integrator->active_sets();
+  }
+
+
+
+  template <int dim>
+  const StepReport &
+  DiscreteProblem<dim>::try_step(const double tau,
+                                 const bool   level_step,
+                                 TimerOutput &timer)
+  {
+    {
+      TimerOutput::Scope t(timer, "time step");
+      report = integrator->step(tau, level_step, u, udot);
+    }
+    check_inertia();
+    return report;
+  }
+
+
+
+  template <int dim>
+  bool
+  DiscreteProblem<dim>::trial_is_finite() const
+  {
+    return std::isfinite(u.l2_norm()) && std::isfinite(udot.l2_norm());
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::restore(const bool from_trial)
+  {
+    const auto active = from_trial ? integrator->active_sets() : start_sets;
+    u                 = u_old;
+    udot              = udot_old;
+    integrator->warm_start(active.first, active.second);
+  }
+
+
+
+  template <int dim>
+  TrialStep
+  DiscreteProblem<dim>::trial()
+  {
+    return {integrator->get_operators(),
+            contact->get_row_operator(),
+            start_sets.first,
+            u_old,
+            udot_old,
+            u,
+            udot,
+            report};
   }
 
 
@@ -352,7 +443,7 @@ namespace dyncontact
     const std::string &what) const
   {
     double refined = 0., coarsened = 0.;
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : triangulation->active_cell_iterators())
       if (cell->is_locally_owned())
         {
           refined += cell->refine_flag_set();
@@ -361,7 +452,7 @@ namespace dyncontact
     refined               = Utilities::MPI::sum(refined, comm);
     coarsened             = Utilities::MPI::sum(coarsened, comm);
     const double children = 1 << dim;
-    const double n_cells  = triangulation.n_global_active_cells();
+    const double n_cells  = triangulation->n_global_active_cells();
     const double growth   = (children - 1.) * (refined - coarsened / children);
     if (growth > 0.)
       check_mesh_fits_in_memory(n_cells + growth,
@@ -379,10 +470,11 @@ namespace dyncontact
 
 
   template <int dim>
-  std::pair<double, double>
+  typename DiscreteProblem<dim>::Adaptation
   DiscreteProblem<dim>::adapt_mesh(const Scene<dim>            &scene,
                                    const std::function<void()> &mark_cells,
                                    const std::string           &remedy,
+                                   const double                 tau,
                                    TimerOutput                 &timer)
   {
     {
@@ -391,7 +483,7 @@ namespace dyncontact
       // a mesh that does not change keeps its DoFs, operators and rows
       const auto flagged = [&]() {
         bool any = false;
-        for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &cell : triangulation->active_cell_iterators())
           if (cell->is_locally_owned() &&
               (cell->refine_flag_set() || cell->coarsen_flag_set()))
             {
@@ -405,11 +497,11 @@ namespace dyncontact
       // has nothing to add to a mesh that came out of a refinement (with
       // the smoothings of make_triangulation()), and is skipped
       if (!flagged())
-        return {0., 0.};
-      triangulation.prepare_coarsening_and_refinement();
+        return {};
+      triangulation->prepare_coarsening_and_refinement();
       // (the memory for the mesh it would make, before it is made)
       if (!check_flagged_mesh_fits_in_memory(scene, remedy))
-        return {0., 0.};
+        return {};
     }
     // (only where the mesh changes: an adaptation that marks no cell
     // costs no energy evaluation; the energy before reads A u from the
@@ -424,25 +516,25 @@ namespace dyncontact
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       // transfer u and udot to the new mesh (p4est also repartitions it)
       system->prepare_for_refinement(u, udot);
-      triangulation.execute_coarsening_and_refinement();
+      triangulation->execute_coarsening_and_refinement();
     }
     setup(scene, timer, true);
     {
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       system->interpolate_after_refinement(u, udot);
     }
-    // the estimates and the rows' states refer to the old mesh
-    time_step_controller.reset(contact->get_rows().size());
-    make_integrator(timer, true);
+    make_integrator(tau, timer, true);
 
-    // the transferred displacement may violate the new K_h: back onto it
-    double violation;
+    // the transferred displacement may penetrate the new K_h: back onto it
+    Adaptation adaptation;
+    adaptation.changed = true;
     {
       TimerOutput::Scope t(timer, "adaptation: constraints restored");
-      violation =
+      adaptation.penetration =
         integrator->restore_constraints(u, contact->get_row_operator());
     }
-    return {energy() - energy_before, violation};
+    adaptation.energy_change = energy() - energy_before;
+    return adaptation;
   }
 
 
@@ -453,7 +545,7 @@ namespace dyncontact
                                       const std::string &failure) const
   {
     const double speed = udot.linfty_norm();
-    const auto   box   = GridTools::compute_bounding_box(triangulation);
+    const auto   box   = GridTools::compute_bounding_box(*triangulation);
     const double size  = box.get_boundary_points().first.distance(
       box.get_boundary_points().second);
     if (!(speed * tau > size))

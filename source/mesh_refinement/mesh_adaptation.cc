@@ -1,0 +1,80 @@
+// MeshAdaptor's execution of a mesh adaptation: the refinement of the
+// initial contact zone, the adaptation after a step and its record (the
+// marking is in mesh_adaptor.cc).
+
+#include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/problem/discrete_problem.h>
+#include <dyncontact/scenes/interface.h>
+
+#include <string>
+
+namespace dyncontact
+{
+  template <int dim>
+  void
+  MeshAdaptor<dim>::refine_initial_contact_zone(DiscreteProblem<dim> &problem,
+                                                TimerOutput          &timer)
+  {
+    const Scene<dim> &scene = this->get_scene();
+    for (unsigned int k = 0; k < initial_refinements; ++k)
+      {
+        problem.interpolate_initial_values(scene);
+        mark_contact_zone();
+        if (!problem.check_flagged_mesh_fits_in_memory(scene,
+                                                       memory_remedy(true),
+                                                       "the mesh refined at "
+                                                       "the contact zone"))
+          {
+            // (nothing more would change)
+            this->get_pcout()
+              << "   warning: Mesh refinement/Initial contact refinements "
+                 "= "
+              << initial_refinements << ": "
+              << (k == 0 ?
+                    std::string("no cell was refined") :
+                    "only " + std::to_string(k) + " of them refined cells") +
+                   ": no slave node is in the contact zone at t = 0 "
+                   "(its gap below Mesh refinement/Contact zone/Distance "
+                   "or two cell sizes), as at the start of an impact "
+                   "across a gap, or its cells are at Mesh "
+                   "refinement/Maximum level (now "
+              << max_level << ")." << std::endl;
+            break;
+          }
+        problem.get_triangulation().execute_coarsening_and_refinement();
+        problem.setup(scene, timer);
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  MeshAdaptor<dim>::adapt(DiscreteProblem<dim> &problem,
+                          const double          tau,
+                          TimerOutput          &timer)
+  {
+    const auto adaptation = problem.adapt_mesh(
+      this->get_scene(),
+      [&]() { mark_cells(problem.get_triangulation()); },
+      memory_remedy(false),
+      tau,
+      timer);
+    record.add(adaptation.energy_change, adaptation.penetration);
+    return adaptation.changed;
+  }
+
+
+
+  // (the class is instantiated in mesh_adaptor.cc)
+  template void
+  MeshAdaptor<2>::refine_initial_contact_zone(DiscreteProblem<2> &,
+                                              TimerOutput &);
+  template void
+  MeshAdaptor<3>::refine_initial_contact_zone(DiscreteProblem<3> &,
+                                              TimerOutput &);
+  template bool
+  MeshAdaptor<2>::adapt(DiscreteProblem<2> &, const double, TimerOutput &);
+  template bool
+  MeshAdaptor<3>::adapt(DiscreteProblem<3> &, const double, TimerOutput &);
+} // namespace dyncontact
