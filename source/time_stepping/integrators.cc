@@ -12,219 +12,6 @@
 
 namespace dyncontact
 {
-  StepOperators::StepOperators(
-    const bool                            is_static,
-    const double                          numerical_dissipation,
-    const double                          tau,
-    const SystemMatrices                 &system,
-    const ActiveSetSolver::Parameters    &solver_parameters,
-    const IndexSet                       &locally_owned,
-    const IndexSet                       &locally_relevant,
-    const AffineConstraints<double>      &mesh_constraints,
-    const ContactRows                    &rows,
-    const ActiveSetSolver::NearNullSpace &near_null_space,
-    const MPI_Comm                        comm)
-    : displacement_active(rows.size(), 0)
-    , projection_active(rows.size(), 0)
-    , is_static(is_static)
-    , theta(is_static ? 0. : numerical_dissipation)
-    , system(system)
-    , solver_parameters(solver_parameters)
-    , locally_owned(locally_owned)
-    , locally_relevant(locally_relevant)
-    , mesh_constraints(&mesh_constraints)
-    , near_null_space(near_null_space)
-    , comm(comm)
-    , projection_solver(solver_parameters, comm)
-    , rows(&rows)
-  {
-    if (is_static)
-      // start with every row active: the bodies are held by the contact
-      displacement_active.assign(rows.size(), 1);
-    set_time_step(tau, true);
-    projection_solver.reinit(locally_owned,
-                             locally_relevant,
-                             mesh_constraints,
-                             rows);
-    if (system.lumped_mass())
-      projection_solver.set_diagonal_matrix(*system.M_lumped);
-    else
-      projection_solver.set_matrix(*system.M);
-  }
-
-
-
-  std::unique_ptr<StepOperators::StepMatrix>
-  StepOperators::make_step_matrix(const double tau) const
-  {
-    auto step_matrix = std::make_unique<StepMatrix>();
-    step_matrix->tau = tau;
-    step_matrix->solver =
-      std::make_unique<ActiveSetSolver>(solver_parameters, comm);
-    ActiveSetSolver &solver = *step_matrix->solver;
-    MatrixType      &S      = step_matrix->S;
-    solver.reinit(locally_owned, locally_relevant, *mesh_constraints, *rows);
-    solver.set_near_null_space(near_null_space);
-    if (is_static)
-      {
-        // H = A; AMG gets A + eps M, which stays SPD without Dirichlet data.
-        // A body held only by the contact rows is free in A: the smaller
-        // eps, the larger AMG's inverse along its rigid motion, which the
-        // condensed operator does not have. 3D ball on block, static, 18e3
-        // and 96e3 DoFs: 2366 and 3304 CG iterations at eps = 1e-6, 1020
-        // and 1390 at 1e-2, 2010 at 1e-1 (96e3).
-        system.assemble_stiffness(S, 1., 0., 0.);
-        MatrixType &preconditioner = step_matrix->preconditioner;
-        preconditioner.copy_from(S);
-        system.add_mass(preconditioner,
-                        1e-2 * S.linfty_norm() / system.mass_linfty_norm());
-        solver.set_matrix(S, &preconditioner);
-        step_matrix->diagonal = matrix_diagonal(S);
-      }
-    else
-      {
-        // S = M + (1/4 + theta/2) tau^2 A + tau/2 B
-        const double a = (0.25 + 0.5 * theta) * tau * tau,
-                     b = system.viscous() ? tau / 2. : 0.;
-        const VectorType M_diagonal =
-          system.lumped_mass() ? *system.M_lumped : matrix_diagonal(*system.M);
-        VectorType &S_diagonal = step_matrix->diagonal;
-        if (matrix_free())
-          {
-            // applied cell by cell: (a A + b B) x + M x
-            S_diagonal.reinit(locally_owned, comm);
-            system.stiffness_combination_diagonal(S_diagonal, a, b);
-            S_diagonal += M_diagonal;
-            step_matrix->stiffness_part.reinit(locally_owned, comm);
-            StepMatrix *const step    = step_matrix.get();
-            const Product     S_vmult = [this, step, a, b](VectorType       &y,
-                                                       const VectorType &x) {
-              system.stiffness_combination_vmult(step->stiffness_part, x, a, b);
-              system.mass_vmult(y, x);
-              y += step->stiffness_part;
-            };
-            // p-multigrid, or Jacobi
-            solver.set_operator(
-              S_vmult,
-              S_diagonal,
-              system.step_preconditioner ?
-                system.step_preconditioner(a, b, S_vmult, S_diagonal) :
-                Product());
-          }
-        else
-          {
-            // assembled cell by cell
-            system.assemble_stiffness(S, a, b, 1.);
-            S_diagonal = matrix_diagonal(S);
-          }
-        // how far the stiffness and viscosity outweigh the mass in S
-        const double *S_ii = S_diagonal.begin(), *M_ii = M_diagonal.begin();
-        double        ratio = 1.;
-        for (unsigned int k = 0; k < S_diagonal.locally_owned_size(); ++k)
-          if (M_ii[k] > 0.)
-            ratio = std::max(ratio, S_ii[k] / M_ii[k]);
-        step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
-        // (the bound of S's Jacobi-scaled condition number needs a lumped
-        // mass)
-        if (!matrix_free())
-          solver.set_matrix(S,
-                            nullptr,
-                            system.lumped_mass() ?
-                              step_matrix->inertia_ratio :
-                              std::numeric_limits<double>::infinity());
-      }
-    return step_matrix;
-  }
-
-
-
-  void
-  StepOperators::set_time_step(const double tau, const bool is_level)
-  {
-    if (current != nullptr && current->tau == tau)
-      return;
-    for (auto level = levels.begin(); level != levels.end(); ++level)
-      if ((*level)->tau == tau)
-        {
-          // most recently used last
-          std::rotate(level, level + 1, levels.end());
-          current = levels.back().get();
-          return;
-        }
-    ++n_step_matrices_built;
-    if (is_level)
-      {
-        if (levels.size() == n_cached_levels)
-          levels.erase(levels.begin());
-        levels.push_back(make_step_matrix(tau));
-        current = levels.back().get();
-      }
-    else
-      {
-        shortened.reset();
-        shortened = make_step_matrix(tau);
-        current   = shortened.get();
-      }
-  }
-
-
-
-  void
-  StepOperators::rhs(const VectorType &w,
-                     const VectorType &u,
-                     VectorType       &r) const
-  {
-    // r(w) = M w - (1/4 - theta/2) tau^2 A u + tau/2 B u + tau^2/2 f
-    const double tau = current->tau;
-    system.mass_vmult(r, w);
-    r.add(-(0.25 - 0.5 * theta) * tau * tau, system.stiffness_vmult(u));
-    if (system.viscous())
-      {
-        VectorType tmp(u);
-        system.B_vmult(tmp, u);
-        r.add(tau / 2., tmp);
-      }
-    r.add(tau * tau / 2., *system.f);
-  }
-
-
-
-  void
-  StepOperators::solve_displacement(const VectorType &r,
-                                    VectorType       &v,
-                                    StepReport       &report)
-  {
-    report.displacement_solve =
-      current->solver->solve(r, v, displacement_active, report.multipliers);
-    report.active = displacement_active;
-  }
-
-
-
-  void
-  StepOperators::project(const VectorType &w, VectorType &v, StepReport &report)
-  {
-    VectorType          r(w);
-    std::vector<double> multipliers;
-    system.mass_vmult(r, w);
-    v = w;
-    report.projection_solve =
-      projection_solver.solve(r, v, projection_active, multipliers);
-    report.projection_active = projection_active;
-  }
-
-
-
-  double
-  StepOperators::mass_norm(const VectorType &x) const
-  {
-    VectorType Mx(x);
-    system.mass_vmult(Mx, x);
-    return std::sqrt(Mx * x);
-  }
-
-
-
   // ---------------------------------------------------------------------
   // The schemes. Each reads like its equations in the paper; schemes()
   // lists them.
@@ -232,22 +19,66 @@ namespace dyncontact
 
   namespace
   {
+    /// (11c) and (12d): argmin_K 1/2 v^T S v - r(u + tau udot)^T v.
+    VectorType
+    implicit_displacement(StepOperators    &ops,
+                          const VectorType &u,
+                          const VectorType &udot,
+                          StepReport       &report)
+    {
+      VectorType w(u), r(u);
+      w.add(ops.tau(), udot);
+      ops.rhs(w, u, r);
+      VectorType u_new(w);
+      ops.solve_displacement(r, u_new, report);
+      return u_new;
+    }
+
+
+
+    /// (11d) and (12e): @p udot becomes 2/tau (u_new - u) - udot.
+    void
+    newmark_velocity(const double      tau,
+                     const VectorType &u,
+                     const VectorType &u_new,
+                     VectorType       &udot)
+    {
+      udot.sadd(-1., 2. / tau, u_new);
+      udot.add(-2. / tau, u);
+    }
+
+
+
+    /// (12c) and (12f): @p velocity = (P(x + tau v) - x) / tau (@p v may
+    /// be @p velocity).
+    void
+    projected_velocity(StepOperators    &ops,
+                       const VectorType &x,
+                       const VectorType &v,
+                       VectorType       &velocity,
+                       StepReport       &report)
+    {
+      const double tau = ops.tau();
+      VectorType   w(x), projected(x);
+      w.add(tau, v);
+      ops.project(w, projected, report);
+      velocity = projected;
+      velocity -= x;
+      velocity /= tau;
+    }
+
+
+
     void
     step_nci(StepOperators &ops,
              VectorType    &u,
              VectorType    &udot,
              StepReport    &report)
     {
-      const double tau = ops.tau();
       // (11c): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
-      VectorType w(u), r(u);
-      w.add(tau, udot);
-      ops.rhs(w, u, r);
-      VectorType u_new(w);
-      ops.solve_displacement(r, u_new, report);
+      const VectorType u_new = implicit_displacement(ops, u, udot, report);
       // (11d): udot^{n+1} = 2/tau (u^{n+1} - u^n) - udot^n
-      udot.sadd(-1., 2. / tau, u_new);
-      udot.add(-2. / tau, u);
+      newmark_velocity(ops.tau(), u, u_new, udot);
       u = u_new;
     }
 
@@ -285,14 +116,8 @@ namespace dyncontact
                      VectorType    &udot,
                      StepReport    &report)
     {
-      const double tau = ops.tau();
       // (12c): udot^0 = (P(u^0 + tau udot_0) - u^0) / tau
-      VectorType w(u), projected(u);
-      w.add(tau, udot);
-      ops.project(w, projected, report);
-      udot = projected;
-      udot -= u;
-      udot /= tau;
+      projected_velocity(ops, u, udot, udot, report);
     }
 
 
@@ -303,24 +128,13 @@ namespace dyncontact
                VectorType    &udot,
                StepReport    &report)
     {
-      const double tau = ops.tau();
       // (12d): u^{n+1} = argmin_K 1/2 v^T S v - r(u^n + tau udot^n)^T v
-      VectorType w(u), r(u);
-      w.add(tau, udot);
-      ops.rhs(w, u, r);
-      VectorType u_new(w);
-      ops.solve_displacement(r, u_new, report);
+      const VectorType u_new = implicit_displacement(ops, u, udot, report);
       // (12e): udot_pred = 2/tau (u^{n+1} - u^n) - udot^n
       VectorType udot_pred(udot);
-      udot_pred.sadd(-1., 2. / tau, u_new);
-      udot_pred.add(-2. / tau, u);
+      newmark_velocity(ops.tau(), u, u_new, udot_pred);
       // (12f): udot^{n+1} = (P(u^{n+1} + tau udot_pred) - u^{n+1}) / tau
-      VectorType predicted(u_new), projected(u_new);
-      predicted.add(tau, udot_pred);
-      ops.project(predicted, projected, report);
-      udot = projected;
-      udot -= u_new;
-      udot /= tau;
+      projected_velocity(ops, u_new, udot_pred, udot, report);
       VectorType correction(udot);
       correction -= udot_pred;
       report.velocity_correction = ops.mass_norm(correction);

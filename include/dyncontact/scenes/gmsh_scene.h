@@ -85,6 +85,32 @@ namespace dyncontact
     unread_entries() const override;
 
   private:
+    /// @name The parts of parse_parameters() (within subsection Scene/Gmsh)
+    /// @{
+
+    /// Body 1 tags, Body 2 tags and their entries: one or two bodies, one
+    /// pair.
+    void
+    parse_two_bodies(ParameterHandler &prm);
+
+    /// @p bodies (Bodies) and the lists of one item per body: any number of
+    /// bodies.
+    void
+    parse_body_list(ParameterHandler &prm, const std::string &bodies);
+
+    /// Contact pairs (with Bodies).
+    void
+    parse_contact_pairs(ParameterHandler &prm);
+
+    /// Obstacle point and Obstacle normal (with a pair 'body : obstacle').
+    void
+    parse_obstacle(ParameterHandler &prm);
+
+    /// Stops if a body has contact tags but no pair names it.
+    void
+    refuse_unpaired_contact_tags() const;
+    /// @}
+
     std::string mesh_file;
     double      n_cells = 0.;
     std::string mesh_checksum;

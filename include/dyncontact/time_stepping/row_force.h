@@ -1,7 +1,7 @@
 #ifndef dyncontact_time_stepping_row_force_h
 #define dyncontact_time_stepping_row_force_h
 
-#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/step_operators.h>
 
 namespace dyncontact
 {

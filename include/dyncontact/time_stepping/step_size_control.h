@@ -1,7 +1,7 @@
 #ifndef dyncontact_time_stepping_step_size_control_h
 #define dyncontact_time_stepping_step_size_control_h
 
-#include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/step_operators.h>
 
 #include <map>
 #include <string>

@@ -1,0 +1,157 @@
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <dyncontact/base/triangulation.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/discretization/serial_mesh_file.h>
+#include <dyncontact/discretization/serial_transfer.h>
+
+// SemiDiscreteSystem: the transfer of the state to an adapted mesh, and the
+// mesh and the vectors of a checkpoint.
+
+namespace dyncontact
+{
+  template <int dim>
+  std::vector<const VectorType *>
+  SemiDiscreteSystem<dim>::start_transfer(
+    const std::vector<const VectorType *> &vectors)
+  {
+    transferred.assign(vectors.size(),
+                       VectorType(locally_owned, locally_relevant, comm));
+    std::vector<const VectorType *> ghosted;
+    for (unsigned int i = 0; i < vectors.size(); ++i)
+      {
+        transferred[i] = *vectors[i];
+        ghosted.push_back(&transferred[i]);
+      }
+    transfer = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
+    return ghosted;
+  }
+
+
+
+  template <int dim>
+  bool
+  SemiDiscreteSystem<dim>::is_serial() const
+  {
+    return as_distributed(dof_handler.get_triangulation()) == nullptr;
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::prepare_for_refinement(const VectorType &u,
+                                                  const VectorType &udot)
+  {
+    if (is_serial())
+      {
+        serial_transfer = std::make_unique<SerialTransfer<dim>>();
+        serial_transfer->prepare(dof_handler, {&u, &udot});
+      }
+    else
+      {
+        // (the transfer object is made by start_transfer())
+        const auto vectors = start_transfer({&u, &udot});
+        transfer->prepare_for_coarsening_and_refinement(vectors);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::interpolate_after_refinement(VectorType &u,
+                                                        VectorType &udot)
+  {
+    reinit_vector(u);
+    reinit_vector(udot);
+    if (serial_transfer)
+      {
+        serial_transfer->interpolate(dof_handler, {&u, &udot});
+        serial_transfer.reset();
+      }
+    else
+      {
+        std::vector<VectorType *> out = {&u, &udot};
+        transfer->interpolate(out);
+        transfer.reset();
+      }
+    transferred.clear();
+    constraints.distribute(u);
+    constraints.distribute(udot);
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::save(const std::string                     &file,
+                                const std::vector<const VectorType *> &vectors)
+  {
+    if (is_serial())
+      SerialMeshFile::write(file, dof_handler, vectors);
+    else
+      {
+        const auto ghosted = start_transfer(vectors);
+        transfer->prepare_for_serialization(ghosted);
+        as_distributed(dof_handler.get_triangulation())->save(file);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::load_mesh(const std::string  &file,
+                                     Triangulation<dim> &triangulation)
+  {
+    if (auto *distributed = as_distributed(triangulation))
+      distributed->load(file);
+    else
+      SerialMeshFile::read_refinement(file, triangulation);
+  }
+
+
+
+  template <int dim>
+  void
+  SemiDiscreteSystem<dim>::load_vectors(
+    const std::string               &file,
+    const std::vector<VectorType *> &vectors)
+  {
+    for (VectorType *v : vectors)
+      reinit_vector(*v);
+    if (is_serial())
+      SerialMeshFile::read_vectors(file, dof_handler, vectors);
+    else
+      {
+        parallel::distributed::SolutionTransfer<dim, VectorType> loader(
+          dof_handler);
+        std::vector<VectorType *> out = vectors;
+        loader.deserialize(out);
+      }
+  }
+
+
+
+  // (the class is instantiated in semi_discrete_system.cc)
+#define DYNCONTACT_INSTANTIATE(dim)                                       \
+  template std::vector<const VectorType *>                                \
+  SemiDiscreteSystem<dim>::start_transfer(                                \
+    const std::vector<const VectorType *> &);                             \
+  template bool SemiDiscreteSystem<dim>::is_serial() const;               \
+  template void SemiDiscreteSystem<dim>::prepare_for_refinement(          \
+    const VectorType &, const VectorType &);                              \
+  template void SemiDiscreteSystem<dim>::interpolate_after_refinement(    \
+    VectorType &, VectorType &);                                          \
+  template void SemiDiscreteSystem<dim>::save(                            \
+    const std::string &, const std::vector<const VectorType *> &);        \
+  template void SemiDiscreteSystem<dim>::load_mesh(const std::string &,   \
+                                                   Triangulation<dim> &); \
+  template void SemiDiscreteSystem<dim>::load_vectors(                    \
+    const std::string &, const std::vector<VectorType *> &);
+  DYNCONTACT_INSTANTIATE(2)
+  DYNCONTACT_INSTANTIATE(3)
+#undef DYNCONTACT_INSTANTIATE
+} // namespace dyncontact

@@ -1,0 +1,526 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <dyncontact/base/checksum.h>
+#include <dyncontact/base/input_checks.h>
+#include <dyncontact/scenes/body_overlap.h>
+#include <dyncontact/scenes/gmsh_entries.h>
+#include <dyncontact/scenes/gmsh_scene.h>
+#include <dyncontact/scenes/msh_check.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <unordered_set>
+
+
+// GmshScene's parameters: their declaration and reading, by job (the mesh
+// and the scene's queries are in gmsh_scene.cc).
+
+namespace dyncontact
+{
+  using namespace GmshEntries;
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.enter_subsection("Gmsh");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "The .msh file (quadrilaterals in 2D, hexahedra in "
+                      "3D); a relative path is relative to the folder of the "
+                      "prm file.");
+    prm.declare_entry("Body 1 tags",
+                      "1",
+                      Patterns::Anything(),
+                      "Physical tags (comma-separated) of the cells of "
+                      "body 1.");
+    prm.declare_entry("Body 2 tags",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of the cells of body 2; empty for "
+                      "a one-body mesh.");
+    prm.declare_entry("Dirichlet tags",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of boundaries where the displacement "
+                      "is held at zero, comma-separated: a tag alone fixes "
+                      "all components (a clamp), a tag followed by ':' and "
+                      "letters of x, y, z only those (a roller or symmetry "
+                      "plane), e.g. '10, 11: y, 12: xz'.");
+    prm.declare_entry("Neumann tags",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of boundaries loaded by the "
+                      "Neumann traction.");
+    prm.declare_entry("Neumann traction",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "The traction on the Neumann boundaries, "
+                      "components in Pa, each in [-1e15, 1e15] (in 2D a third "
+                      "component must be 0).");
+    prm.declare_entry("Contact tags of body 1",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of the possible contact boundary "
+                      "of body 1.");
+    prm.declare_entry("Contact tags of body 2",
+                      "",
+                      Patterns::Anything(),
+                      "Physical tags of the possible contact boundary "
+                      "of body 2.");
+    prm.declare_entry("Initial velocity of body 1",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "Initial velocity of body 1, components in m/s, each in "
+                      "[-1e9, 1e9] (in 2D a third component must be 0).");
+    prm.declare_entry("Initial velocity of body 2",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "Initial velocity of body 2, components in m/s, each in "
+                      "[-1e9, 1e9] (in 2D a third component must be 0).");
+    prm.declare_entry("Bodies",
+                      "",
+                      Patterns::Anything(),
+                      "Any number of bodies: the physical tags of the cells "
+                      "of each body, comma-separated, the bodies separated "
+                      "by ';' (e.g. '1; 2; 3, 4': three bodies, the third of "
+                      "tags 3 and 4), instead of Body 1 tags and Body 2 "
+                      "tags. Body 1 is of subsection Material, every other "
+                      "of Material of body 2. Empty: Body 1 tags and Body 2 "
+                      "tags.");
+    prm.declare_entry("Contact tags",
+                      "",
+                      Patterns::Anything(),
+                      "With Bodies: the physical tags of each body's "
+                      "possible contact boundary, in the order of Bodies, "
+                      "separated by ';' (an empty item: none).");
+    prm.declare_entry("Initial velocities",
+                      "",
+                      Patterns::Anything(),
+                      "With Bodies: the initial velocity of each body, in "
+                      "the order of Bodies, separated by ';', components in "
+                      "m/s comma-separated, each in [-1e9, 1e9]; empty: all "
+                      "at rest.");
+    prm.declare_entry("Contact pairs",
+                      "",
+                      Patterns::Anything(),
+                      "With Bodies: the contact pairs as 'slave : master' "
+                      "body numbers, comma-separated (e.g. '2 : 1, 3 : 2'); "
+                      "a pair's surfaces are the Contact tags of its bodies, "
+                      "its slave's nodes carry the rows (Contact/Slave "
+                      "side must then be auto), and a slave node "
+                      "that finds a master surface in two pairs keeps the "
+                      "row of the nearer. The master can be 'obstacle', the "
+                      "rigid obstacle of Obstacle point and Obstacle normal "
+                      "(e.g. '1 : obstacle, 2 : 1'; it is one pair for all "
+                      "bodies it names, numbered after the pairs of two "
+                      "bodies in the statistics). A pair of two bodies can "
+                      "have its own search radius in m, in (0, 1e15], "
+                      "as a third item (e.g. '2 : 1 : 0.01'), which "
+                      "Contact/Search radius does not override.");
+    prm.declare_entry("Obstacle point",
+                      "",
+                      Patterns::Anything(),
+                      "With a pair 'slave : obstacle': a point on the "
+                      "surface of the rigid obstacle, the half-space behind "
+                      "it, components in m, each in [-1e15, 1e15]; empty: "
+                      "no obstacle.");
+    prm.declare_entry("Obstacle normal",
+                      "",
+                      Patterns::Anything(),
+                      "With a pair 'slave : obstacle': the normal of the "
+                      "obstacle's surface, pointing out of the obstacle "
+                      "into free space (any length > 0; it is normalised), "
+                      "components comma-separated; empty: no obstacle.");
+    prm.declare_entry("Gravity",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "Gravitational acceleration g, components in "
+                      "m/s^2, each in [-1e15, 1e15] (in 2D a third component "
+                      "must be 0); the body force is rho g.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, std::string>>
+  GmshScene<dim>::unread_entries() const
+  {
+    auto unread = Scene<dim>::unread_entries();
+    if (neumann_tags.empty())
+      unread.emplace_back("Scene/Gmsh/Neumann traction",
+                          "Scene/Gmsh/Neumann tags is empty, so no boundary "
+                          "carries the traction");
+    if (!pairs_listed && body_tags.size() == 1)
+      unread.emplace_back("Scene/Gmsh/Initial velocity of body 2",
+                          "the mesh has one body (Scene/Gmsh/Body 2 tags is "
+                          "empty)");
+    return unread;
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.enter_subsection("Gmsh");
+    mesh_file            = prm.get("Mesh file");
+    dirichlet_components = parse_dirichlet_tags<dim>(prm.get("Dirichlet tags"));
+    neumann_tags         = parse_tags(prm.get("Neumann tags"), "Neumann tags");
+    traction             = parse_vector<dim>(prm.get("Neumann traction"),
+                                 "Neumann traction",
+                                 1e15,
+                                 "Pa");
+    gravity = parse_vector<dim>(prm.get("Gravity"), "Gravity", 1e15, "m/s^2");
+    const std::string bodies = prm.get("Bodies");
+    body_tags.clear();
+    contact_tags.clear();
+    contact_entries.clear();
+    velocity.clear();
+    pairs.clear();
+    obstacle_slaves.clear();
+    pairs_listed = !bodies.empty();
+    if (bodies.empty())
+      parse_two_bodies(prm);
+    else
+      {
+        parse_body_list(prm, bodies);
+        parse_contact_pairs(prm);
+        parse_obstacle(prm);
+        refuse_unpaired_contact_tags();
+      }
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    AssertThrow(!mesh_file.empty(),
+                ExcMessage("Scene/Gmsh/Mesh file must name a .msh file."));
+    if (std::filesystem::path(mesh_file).is_relative() &&
+        !this->input_directory.empty())
+      mesh_file =
+        (std::filesystem::path(this->input_directory) / mesh_file).string();
+    n_cells       = check_msh_file(mesh_file, dim);
+    mesh_checksum = checksum_of_file(mesh_file);
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::parse_two_bodies(ParameterHandler &prm)
+  {
+    // one or two bodies, one pair
+    for (const std::string entry :
+         {"Contact tags", "Initial velocities", "Contact pairs"})
+      AssertThrow(prm.get(entry).empty(),
+                  ExcMessage("Scene/Gmsh/" + entry +
+                             " needs Scene/Gmsh/Bodies (the bodies as a "
+                             "list); with Body 1 tags and Body 2 tags use "
+                             "Contact tags of body 1 and 2 and Initial "
+                             "velocity of body 1 and 2."));
+    body_tags.push_back(parse_tags(prm.get("Body 1 tags"), "Body 1 tags"));
+    const auto second = parse_tags(prm.get("Body 2 tags"), "Body 2 tags");
+    if (!second.empty())
+      body_tags.push_back(second);
+    for (unsigned int b = 0; b < 2; ++b)
+      {
+        const std::string entry =
+          "Contact tags of body " + std::to_string(b + 1);
+        contact_tags.emplace_back();
+        for (const auto tag : parse_tags(prm.get(entry), entry))
+          contact_tags[b].push_back(tag);
+        contact_entries.push_back(entry);
+        const std::string v =
+          "Initial velocity of body " + std::to_string(b + 1);
+        velocity.push_back(parse_vector<dim>(prm.get(v), v, 1e9, "m/s"));
+      }
+    AssertThrow(!body_tags[0].empty(),
+                ExcMessage(
+                  "Scene/Gmsh/Body 1 tags must name at least one tag."));
+    for (const auto tag : body_tags[0])
+      AssertThrow(second.count(tag) == 0,
+                  ExcMessage("Scene/Gmsh: tag " + std::to_string(tag) +
+                             " is in both Body 1 tags and Body 2 tags."));
+    AssertThrow(contact_tags[0].empty() == contact_tags[1].empty() &&
+                  (contact_tags[0].empty() || body_tags.size() == 2),
+                ExcMessage("Scene/Gmsh: contact needs two bodies, and "
+                           "contact tags on both (Contact tags of body 1 "
+                           "and 2)."));
+    for (const std::string entry : {"Obstacle point", "Obstacle normal"})
+      AssertThrow(prm.get(entry).empty(),
+                  ExcMessage("Scene/Gmsh/" + entry +
+                             " needs Scene/Gmsh/Bodies and a pair 'body : "
+                             "obstacle' in Scene/Gmsh/Contact pairs."));
+    if (!contact_tags[0].empty())
+      pairs.push_back({0, 1, 0.});
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::parse_body_list(ParameterHandler  &prm,
+                                  const std::string &bodies)
+  {
+    // any number of bodies and a list of pairs
+    for (const auto &[entry, default_value] :
+         std::vector<std::pair<std::string, std::string>>{
+           {"Body 1 tags", "1"},
+           {"Body 2 tags", ""},
+           {"Contact tags of body 1", ""},
+           {"Contact tags of body 2", ""},
+           {"Initial velocity of body 1", "0, 0, 0"},
+           {"Initial velocity of body 2", "0, 0, 0"}})
+      AssertThrow(prm.get(entry) == default_value,
+                  ExcMessage("Scene/Gmsh/Bodies replaces Body 1 tags, "
+                             "Body 2 tags and their entries; Scene/Gmsh/" +
+                             entry +
+                             " must be left out (use Contact tags and "
+                             "Initial velocities)."));
+    for (const std::string &item : Utilities::split_string_list(bodies, ';'))
+      {
+        const auto tags = parse_tags(item, "Bodies");
+        AssertThrow(!tags.empty(),
+                    ExcMessage("Scene/Gmsh/Bodies = '" + bodies + "': body " +
+                               std::to_string(body_tags.size() + 1) +
+                               " has no tags."));
+        for (const auto tag : tags)
+          for (unsigned int b = 0; b < body_tags.size(); ++b)
+            AssertThrow(body_tags[b].count(tag) == 0,
+                        ExcMessage("Scene/Gmsh/Bodies: tag " +
+                                   std::to_string(tag) + " is in body " +
+                                   std::to_string(b + 1) + " and in body " +
+                                   std::to_string(body_tags.size() + 1) + "."));
+        body_tags.push_back(tags);
+      }
+    const unsigned int n = body_tags.size();
+    AssertThrow(n <= 50,
+                ExcMessage("Scene/Gmsh/Bodies names " + std::to_string(n) +
+                           " bodies; at most 50 are supported."));
+    const auto per_body = [&](const std::string &entry) {
+      const std::string text = prm.get(entry);
+      if (text.empty())
+        return std::vector<std::string>(n);
+      const std::vector<std::string> items = split_items(text, ';');
+      AssertThrow(items.size() == n,
+                  ExcMessage("Scene/Gmsh/" + entry + " = '" + text + "' has " +
+                             std::to_string(items.size()) +
+                             " items separated by ';'; Scene/Gmsh/Bodies "
+                             "has " +
+                             std::to_string(n) + " bodies."));
+      return items;
+    };
+    const auto contact_items  = per_body("Contact tags");
+    const auto velocity_items = per_body("Initial velocities");
+    for (unsigned int b = 0; b < n; ++b)
+      {
+        const std::string entry =
+          "Contact tags (body " + std::to_string(b + 1) + ")";
+        contact_tags.emplace_back();
+        for (const auto tag : parse_tags(contact_items[b], entry))
+          contact_tags[b].push_back(tag);
+        contact_entries.push_back(entry);
+        velocity.push_back(velocity_items[b].empty() ?
+                             Tensor<1, dim>() :
+                             parse_vector<dim>(velocity_items[b],
+                                               "Initial velocities (body " +
+                                                 std::to_string(b + 1) + ")",
+                                               1e9,
+                                               "m/s"));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::parse_contact_pairs(ParameterHandler &prm)
+  {
+    const unsigned int n    = body_tags.size();
+    const std::string  list = prm.get("Contact pairs");
+    for (const std::string &item : Utilities::split_string_list(list, ','))
+      {
+        const auto sides = split_items(item, ':');
+        AssertThrow(sides.size() < 2 || sides[0] != "obstacle",
+                    ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
+                               "' makes the rigid obstacle the slave; it "
+                               "can only be the master (write 'body : "
+                               "obstacle')."));
+        std::array<long, 2> body{{0, 0}};
+        double              radius = 0.;
+        bool                valid  = sides.size() == 2 || sides.size() == 3;
+        for (unsigned int k = 0; valid && k < 2; ++k)
+          {
+            char *end = nullptr;
+            body[k]   = std::strtol(sides[k].c_str(), &end, 10);
+            valid     = !sides[k].empty() && *end == '\0';
+            if (k == 1 && sides[k] == "obstacle")
+              {
+                body[k] = 0;
+                valid   = true;
+              }
+          }
+        if (valid && sides.size() == 3)
+          {
+            char *end = nullptr;
+            radius    = std::strtod(sides[2].c_str(), &end);
+            valid     = !sides[2].empty() && *end == '\0';
+          }
+        AssertThrow(valid,
+                    ExcMessage("Scene/Gmsh/Contact pairs: '" + item +
+                               "' is no pair 'slave : master' of body "
+                               "numbers (the master can be 'obstacle'), "
+                               "or 'slave : master : search radius'."));
+        const bool with_obstacle = sides[1] == "obstacle";
+        for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
+          AssertThrow(body[k] >= 1 && body[k] <= long(n),
+                      ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
+                                 "' names body " + sides[k] +
+                                 ", but Scene/Gmsh/Bodies has bodies 1 "
+                                 "to " +
+                                 std::to_string(n) + "."));
+        AssertThrow(body[0] != body[1],
+                    ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
+                               "' pairs body " + std::to_string(body[0]) +
+                               " with itself."));
+        AssertThrow(sides.size() == 2 || !with_obstacle,
+                    ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
+                               "' gives the rigid obstacle a search "
+                               "radius; every slave node of the obstacle "
+                               "gets a row, leave the radius out."));
+        AssertThrow(sides.size() == 2 ||
+                      (std::isfinite(radius) && radius > 0. && radius <= 1e15),
+                    ExcMessage("Scene/Gmsh/Contact pairs: the search "
+                               "radius of the pair '" +
+                               item + "' must lie in (0, 1e15] m."));
+        const unsigned int slave  = body[0] - 1;
+        const unsigned int master = with_obstacle ? 0 : body[1] - 1;
+        if (with_obstacle)
+          {
+            AssertThrow(obstacle_slaves.insert(slave).second,
+                        ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                   item + "' is listed twice."));
+          }
+        else
+          {
+            for (const BodyPair &pair : pairs)
+              AssertThrow(std::minmax(pair.slave, pair.master) !=
+                            std::minmax(slave, master),
+                          ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                     item +
+                                     "' is listed twice (a pair of two "
+                                     "bodies is listed once, either "
+                                     "way)."));
+          }
+        for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
+          AssertThrow(!contact_tags[body[k] - 1].empty(),
+                      ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
+                                 "' names body " + std::to_string(body[k]) +
+                                 ", which has no Scene/Gmsh/Contact "
+                                 "tags."));
+        if (!with_obstacle)
+          pairs.push_back({slave, master, radius});
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::parse_obstacle(ParameterHandler &prm)
+  {
+    // the rigid obstacle
+    const std::string point  = prm.get("Obstacle point");
+    const std::string normal = prm.get("Obstacle normal");
+    AssertThrow(!obstacle_slaves.empty() || (point.empty() && normal.empty()),
+                ExcMessage("Scene/Gmsh/Obstacle point or Obstacle normal is "
+                           "given, but no pair of Scene/Gmsh/Contact pairs "
+                           "names the obstacle ('body : obstacle'): name it, "
+                           "or leave them out."));
+    AssertThrow(obstacle_slaves.empty() || (!point.empty() && !normal.empty()),
+                ExcMessage("Scene/Gmsh/Contact pairs names the rigid obstacle: "
+                           "give both Scene/Gmsh/Obstacle point and "
+                           "Scene/Gmsh/Obstacle normal."));
+    if (!obstacle_slaves.empty())
+      {
+        rigid_obstacle.point =
+          Point<dim>(parse_vector<dim>(point, "Obstacle point", 1e15, "m"));
+        rigid_obstacle.normal =
+          parse_vector<dim>(normal, "Obstacle normal", 1e15, "");
+        // (scaled first: the square of a tiny component underflows)
+        double largest = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          largest = std::max(largest, std::abs(rigid_obstacle.normal[d]));
+        AssertThrow(largest > 0.,
+                    ExcMessage("Scene/Gmsh/Obstacle normal = '" + normal +
+                               "' must have a length > 0."));
+        // (component by component: Tensor's /= multiplies by the
+        // reciprocal, which is infinite for a subnormal largest)
+        for (unsigned int d = 0; d < dim; ++d)
+          rigid_obstacle.normal[d] = rigid_obstacle.normal[d] / largest;
+        const double length = rigid_obstacle.normal.norm();
+        for (unsigned int d = 0; d < dim; ++d)
+          rigid_obstacle.normal[d] = rigid_obstacle.normal[d] / length;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::refuse_unpaired_contact_tags() const
+  {
+    const unsigned int n = body_tags.size();
+    // contact tags that no pair uses: bodies that would pass through
+    // each other unnoticed
+    for (unsigned int b = 0; b < n; ++b)
+      if (!contact_tags[b].empty())
+        {
+          bool paired = obstacle_slaves.count(b) > 0;
+          for (const BodyPair &pair : pairs)
+            paired = paired || pair.slave == b || pair.master == b;
+          AssertThrow(paired,
+                      ExcMessage("Scene/Gmsh/Contact tags give body " +
+                                 std::to_string(b + 1) +
+                                 " a contact boundary, but no pair of "
+                                 "Scene/Gmsh/Contact pairs names it: list its "
+                                 "pairs (slave : master), or leave its contact "
+                                 "tags out."));
+        }
+  }
+
+
+
+  // (the class is instantiated where it is registered, in gmsh_scene.cc)
+#define DYNCONTACT_INSTANTIATE(dim)                                      \
+  template void GmshScene<dim>::declare_parameters(ParameterHandler &);  \
+  template std::vector<std::pair<std::string, std::string>>              \
+                GmshScene<dim>::unread_entries() const;                  \
+  template void GmshScene<dim>::parse_parameters(ParameterHandler &);    \
+  template void GmshScene<dim>::parse_two_bodies(ParameterHandler &);    \
+  template void GmshScene<dim>::parse_body_list(ParameterHandler &,      \
+                                                const std::string &);    \
+  template void GmshScene<dim>::parse_contact_pairs(ParameterHandler &); \
+  template void GmshScene<dim>::parse_obstacle(ParameterHandler &);      \
+  template void GmshScene<dim>::refuse_unpaired_contact_tags() const;
+  DYNCONTACT_INSTANTIATE(2)
+  DYNCONTACT_INSTANTIATE(3)
+#undef DYNCONTACT_INSTANTIATE
+} // namespace dyncontact
