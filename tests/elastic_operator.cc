@@ -52,7 +52,8 @@ check(const unsigned int degree)
     "end\n"
     "subsection Material of body 2\n  set Young's modulus = 7\n"
     "  set Poisson's ratio = 0.1\n  set Viscous shear modulus = 0.05\nend\n");
-  const auto scene = create_scene<dim>(prm, ".");
+  const auto scene =
+    create_scene<dim>(prm, ".", prm.get_integer("Polynomial degree"), true);
   typename SemiDiscreteSystem<dim>::Parameters parameters;
   parameters.degree = degree;
 

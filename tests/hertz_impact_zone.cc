@@ -81,7 +81,8 @@ check_zone(const double drop_velocity)
        << "subsection Material of body 2\n  set Young's modulus = " << E
        << "\n  set Poisson's ratio = " << nu << "\nend\n";
   prm.parse_input_from_string(text.str());
-  const auto  scene = create_scene<dim>(prm, ".");
+  const auto scene =
+    create_scene<dim>(prm, ".", prm.get_integer("Polynomial degree"), true);
   const auto &hertz = dynamic_cast<const HertzScene<dim> &>(*scene);
 
   const double E_star = E / (2. * (1. - nu * nu));

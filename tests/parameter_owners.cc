@@ -3,7 +3,13 @@
 // parameter_owners(), and every plugin (scene, refinement criterion,
 // statistic) declares its entries only in <Component>/<Plugin>, the
 // plugin's name with a capital first letter (as ASPECT nests its plugins'
-// parameters). The table of subsections and owners is the output.
+// parameters). The table of subsections and owners is the output. And the
+// owners alone read their entries: every top-level subsection is entered
+// (prm.enter_subsection) by the files of one folder of source/, the owner's,
+// and the top-level entries are read only by GlobalParameters
+// (base/global_parameters.cc): another component is handed the value (as
+// the scene is handed Polynomial degree and whether Contact solver/Step
+// matrix stores S).
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -13,8 +19,10 @@
 #include <dyncontact/scenes/interface.h>
 
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -129,4 +137,56 @@ main()
   check_plugins<Scene>("Scene");
   check_plugins<MeshRefinement::Interface>("Mesh refinement");
   check_plugins<Postprocess::Interface>("Postprocess");
+
+  // who reads: the folders whose files enter each top-level subsection,
+  // and the files that read a top-level entry by its name
+  std::set<std::string> top_subsections, top_entries;
+  for (const auto &entry : entries(&declare_all_parameters))
+    {
+      const auto slash = entry.find('/');
+      if (slash == std::string::npos)
+        top_entries.insert(entry);
+      else
+        top_subsections.insert(entry.substr(0, slash));
+    }
+  std::map<std::string, std::set<std::string>> readers;
+  std::set<std::string>                        entry_readers;
+  const std::regex            enter("enter_subsection\\(\"([^\"]+)\"\\)");
+  const std::regex            get("\\.get[a-z_]*\\(\"([^\"]+)\"\\)");
+  const std::filesystem::path root =
+    std::filesystem::path(DYNCONTACT_SOURCE_DIR) / "source";
+  for (const auto &file : std::filesystem::recursive_directory_iterator(root))
+    {
+      if (!file.is_regular_file())
+        continue;
+      const std::string name =
+        std::filesystem::relative(file.path(), root).string();
+      std::ifstream in(file.path());
+      for (std::string line; std::getline(in, line);)
+        {
+          std::smatch match;
+          if (std::regex_search(line, match, enter) &&
+              top_subsections.count(match[1]))
+            readers[match[1]].insert(name.substr(0, name.find('/')));
+          if (std::regex_search(line, match, get) &&
+              top_entries.count(match[1]))
+            entry_readers.insert(name);
+        }
+    }
+  unsigned int several = 0;
+  for (const auto &[subsection, folders] : readers)
+    {
+      out << subsection << " is read in";
+      for (const auto &folder : folders)
+        out << " " << folder << "/";
+      out << "\n";
+      several += (folders.size() > 1);
+    }
+  out << "each top-level subsection is read in one folder: "
+      << (several == 0 && readers.size() > 5 ? "OK" : "FAILED") << "\n";
+  out << "the top-level entries are read only by GlobalParameters: "
+      << (entry_readers == std::set<std::string>{"base/global_parameters.cc"} ?
+            "OK" :
+            "FAILED")
+      << "\n";
 }

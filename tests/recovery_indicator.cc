@@ -91,7 +91,8 @@ check(const unsigned int degree)
     "subsection Scene\n  set Name = two bars\n"
     "  subsection Two bars\n    set Length = 1\n    set Initial gap = 0.1\n"
     "    set Cells along length = 8\n  end\nend\n");
-  const auto scene = create_scene<dim>(prm, ".");
+  const auto scene =
+    create_scene<dim>(prm, ".", prm.get_integer("Polynomial degree"), true);
   typename SemiDiscreteSystem<dim>::Parameters parameters;
   parameters.degree = degree;
 

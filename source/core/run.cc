@@ -44,7 +44,9 @@ namespace dyncontact
     if (std::filesystem::exists(source))
       input_directory = std::filesystem::path(source).parent_path().string();
 
-    if (prm.get_integer("Dimension") == 2)
+    GlobalParameters global;
+    global.parse_parameters(prm);
+    if (global.dimension == 2)
       return Simulator<2>(prm, input_directory, comm, set_entries).run();
     else
       return Simulator<3>(prm, input_directory, comm, set_entries).run();

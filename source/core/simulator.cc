@@ -27,42 +27,54 @@ namespace dyncontact
     const std::string                                      &input_directory,
     const MPI_Comm                                          comm,
     const std::vector<std::pair<std::string, std::string>> &set_entries)
-    : parameters(parsed<GlobalParameters>(prm))
-    , comm(comm)
+    : comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , time_integration(parsed<TimeIntegrationParameters>(prm))
     , control(comm, pcout)
-    , scheme(scheme_by_name(time_integration.scheme))
+    , checkpoints(comm)
   {
+    // Each component reads the subsections it owns (parameter_owners())
+    // with parse_parameters(prm); what it needs of another owner's is
+    // handed to it by name.
+    parameters.parse_parameters(prm);
     parameters.input_directory = input_directory;
-    const auto output          = parsed<OutputParameters>(prm);
-    checkpoints.parse_parameters(prm, parameters.output_directory, comm);
+    time_integration.parse_parameters(prm);
+    scheme = &scheme_by_name(time_integration.scheme);
+    OutputParameters output;
+    output.parse_parameters(prm);
+    checkpoints.parse_parameters(prm);
+    checkpoints.set_output_directory(parameters.output_directory);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
-    control.parse_parameters(time_integration,
-                             {output.output_interval,
-                              checkpoints.interval_in_steps(),
-                              checkpoints.interval_in_minutes(),
-                              mesh_adaptor->get_refinement_interval()},
-                             scheme.is_static);
-    const typename SemiDiscreteSystem<dim>::Parameters system = {
-      parameters.degree, time_integration.lumped_mass};
-    problem = std::make_unique<DiscreteProblem<dim>>(
-      prm,
-      scheme,
-      time_integration.numerical_dissipation,
-      system,
-      pcout,
-      comm,
-      parameters.serial_triangulation);
-    vtu_writer = std::make_unique<VtuWriter<dim>>();
-    vtu_writer->parse_parameters(output);
+
+    SimulationControl::Parameters intervals;
+    intervals.output_interval     = output.output_interval;
+    intervals.checkpoint_steps    = checkpoints.interval_in_steps();
+    intervals.checkpoint_minutes  = checkpoints.interval_in_minutes();
+    intervals.refinement_interval = mesh_adaptor->get_refinement_interval();
+    control.parse_parameters(time_integration, intervals, scheme->is_static);
+
+    typename DiscreteProblem<dim>::Parameters discretization;
+    discretization.system.degree      = parameters.degree;
+    discretization.system.lumped_mass = time_integration.lumped_mass;
+    discretization.numerical_dissipation =
+      time_integration.numerical_dissipation;
+    discretization.serial_triangulation = parameters.serial_triangulation;
+    problem = std::make_unique<DiscreteProblem<dim>>(*scheme,
+                                                     discretization,
+                                                     pcout,
+                                                     comm);
+    problem->parse_parameters(prm);
+
+    vtu_writer       = std::make_unique<VtuWriter<dim>>(output);
     reference_states = std::make_unique<ReferenceStates<dim>>();
     reference_states->parse_parameters(prm);
     postprocessors = std::make_unique<Postprocess::Manager<dim>>();
     postprocessors->parse_parameters(prm);
     progress = std::make_unique<Progress>(output.progress_interval, pcout);
-    scene    = create_scene<dim>(prm, input_directory);
+    scene    = create_scene<dim>(prm,
+                              input_directory,
+                              parameters.degree,
+                              problem->assembles_step_matrix());
     problem->get_contact().check(*scene);
     if (!scene->input_checksum().empty())
       checkpoints.add_critical_parameter(scene->subsection() +
@@ -75,35 +87,6 @@ namespace dyncontact
     postprocessors->initialize_simulator(*this);
     run_report.initialize_simulator(*this);
     warn_of_unread_entries(set_entries);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::warn_of_unread_entries(
-    const std::vector<std::pair<std::string, std::string>> &set_entries) const
-  {
-    // (subsection or entry, why the run does not read it)
-    std::vector<std::pair<std::string, std::string>> unread =
-      scene->unread_entries();
-    for (const auto &entry : mesh_adaptor->unread_entries(scheme.is_static))
-      unread.push_back(entry);
-    if (!scene->has_exact_solution() || scheme.is_static)
-      unread.emplace_back("Postprocess/Error energy norm",
-                          scheme.is_static ?
-                            "the static problem has no exact solution in "
-                            "time to compare with" :
-                            "the '" + scene->name() +
-                              "' scene has no exact solution");
-    for (const auto &entry : vtu_writer->unread_entries())
-      unread.push_back(entry);
-    for (const auto &entry : reference_states->unread_entries())
-      unread.push_back(entry);
-    pcout << unread_entry_warnings(set_entries,
-                                   scene->name(),
-                                   scene->subsection(),
-                                   unread);
   }
 
 
@@ -284,7 +267,7 @@ namespace dyncontact
   Simulator<dim>::run_time_loop()
   {
     pcout << "dyncontact: scene '" << scene->name() << "', " << dim
-          << "D, scheme " << scheme.name << ", "
+          << "D, scheme " << scheme->name << ", "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << (parameters.serial_triangulation ? ", serial triangulation" : "")
           << std::endl;

@@ -84,13 +84,23 @@ namespace dyncontact
 
 
 
+  Checkpoints::Checkpoints(const MPI_Comm comm)
+    : comm(comm)
+  {}
+
+
+
   void
-  Checkpoints::parse_parameters(ParameterHandler  &prm,
-                                const std::string &output_directory,
-                                const MPI_Comm     communicator)
+  Checkpoints::set_output_directory(const std::string &output_directory)
   {
     root = output_directory + "/checkpoints";
-    comm = communicator;
+  }
+
+
+
+  void
+  Checkpoints::parse_parameters(ParameterHandler &prm)
+  {
     prm.enter_subsection("Checkpointing");
     resume_run       = prm.get_bool("Resume");
     interval_steps   = prm.get_integer("Interval in steps");

@@ -379,8 +379,7 @@ namespace dyncontact
 
 
   template <int dim>
-  void
-  VtuWriter<dim>::parse_parameters(const OutputParameters &parameters)
+  VtuWriter<dim>::VtuWriter(const OutputParameters &parameters)
   {
     write_vtu       = parameters.write_vtu;
     compression     = parameters.compression == "none" ?

@@ -19,30 +19,38 @@
 namespace dyncontact
 {
   template <int dim>
-  DiscreteProblem<dim>::DiscreteProblem(
-    ParameterHandler                                   &prm,
-    const Scheme                                       &scheme,
-    const double                                        numerical_dissipation,
-    const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
-    const ConditionalOStream                           &pcout,
-    const MPI_Comm                                      comm,
-    const bool                                          serial_triangulation)
-    : triangulation(make_triangulation<dim>(serial_triangulation, comm))
+  DiscreteProblem<dim>::DiscreteProblem(const Scheme             &scheme,
+                                        const Parameters         &parameters,
+                                        const ConditionalOStream &pcout,
+                                        const MPI_Comm            comm)
+    : triangulation(
+        make_triangulation<dim>(parameters.serial_triangulation, comm))
     , comm(comm)
     , pcout(pcout)
     , scheme(scheme)
-    , numerical_dissipation(numerical_dissipation)
+    , parameters(parameters)
   {
-    AssertThrow(
-      !serial_triangulation || Utilities::MPI::n_mpi_processes(comm) == 1,
-      ExcMessage("Mesh/Triangulation = serial holds the whole mesh "
-                 "in deal.II's Triangulation on one MPI rank, but "
-                 "this run has " +
-                 std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
-                 " ranks: run it on one rank, or set "
-                 "'Triangulation' to distributed (a run resumed from "
-                 "a checkpoint keeps the triangulation it was written "
-                 "with: resume a serial one on one rank)."));
+    AssertThrow(!parameters.serial_triangulation ||
+                  Utilities::MPI::n_mpi_processes(comm) == 1,
+                ExcMessage(
+                  "Mesh/Triangulation = serial holds the whole mesh "
+                  "in deal.II's Triangulation on one MPI rank, but "
+                  "this run has " +
+                  std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
+                  " ranks: run it on one rank, or set "
+                  "'Triangulation' to distributed (a run resumed from "
+                  "a checkpoint keeps the triangulation it was written "
+                  "with: resume a serial one on one rank)."));
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    const double numerical_dissipation = parameters.numerical_dissipation;
+    const auto  &system_parameters     = parameters.system;
     solver_parameters.parse_parameters(prm);
     AssertThrow(!(scheme.is_static && numerical_dissipation > 0.),
                 ExcMessage("Time integration/Numerical dissipation > 0 is "
@@ -156,52 +164,6 @@ namespace dyncontact
 
   template <int dim>
   void
-  DiscreteProblem<dim>::check_rigid_motions(const Scene<dim> &scene) const
-  {
-    std::vector<unsigned int> unheld =
-      unheld_rigid_motions(*system, scene.n_bodies());
-    // a body between two contacts (e.g. a ball between two blocks): a
-    // single free motion is left to them
-    std::vector<std::vector<types::boundary_id>> contacts;
-    for (const ContactPair &pair : scene.contact_pairs())
-      {
-        contacts.push_back(pair.first_side);
-        contacts.push_back(pair.second_side);
-      }
-    contacts.push_back(scene.contact_boundary_ids());
-    const auto ids = boundary_ids_of_bodies(*triangulation, scene.n_bodies());
-    for (unsigned int b = 0; b < unheld.size(); ++b)
-      {
-        unsigned int n_surfaces = 0;
-        for (const auto &surface : contacts)
-          n_surfaces += has_any_of(ids[b], surface);
-        if (unheld[b] == 1 && n_surfaces >= 2)
-          unheld[b] = 0;
-      }
-    std::string bodies;
-    for (unsigned int b = 0; b < unheld.size(); ++b)
-      if (unheld[b] > 0)
-        bodies += (bodies.empty() ? "body " : ", body ") +
-                  std::to_string(b + 1) + " (" + std::to_string(unheld[b]) +
-                  (unheld[b] == 1 ? " rigid motion)" : " rigid motions)");
-    AssertThrow(bodies.empty(),
-                ExcMessage(
-                  "The static problem is singular: nothing holds " + bodies +
-                  ": no Dirichlet boundary fixes these rigid motions "
-                  "(translations, rotations), and no load acts along them "
-                  "(a single one along which the load acts, or of a body "
-                  "with two contact surfaces, is left to the contact), so "
-                  "the position is not determined. Clamp part "
-                  "of the boundary (a Dirichlet boundary of the scene, e.g. "
-                  "Scene/Gmsh/Dirichlet tags), give the body a load towards "
-                  "the obstacle (e.g. Scene/Hertz/Load > 0), or use a "
-                  "dynamic scheme."));
-  }
-
-
-
-  template <int dim>
-  void
   DiscreteProblem<dim>::make_integrator(const double tau,
                                         TimerOutput &timer,
                                         const bool   adapting)
@@ -227,7 +189,7 @@ namespace dyncontact
       };
     integrator =
       std::make_unique<TimeIntegrator>(scheme,
-                                       numerical_dissipation,
+                                       parameters.numerical_dissipation,
                                        tau,
                                        matrices,
                                        solver_parameters,
@@ -436,40 +398,6 @@ namespace dyncontact
 
 
   template <int dim>
-  bool
-  DiscreteProblem<dim>::check_flagged_mesh_fits_in_memory(
-    const Scene<dim>  &scene,
-    const std::string &remedy,
-    const std::string &what) const
-  {
-    double refined = 0., coarsened = 0.;
-    for (const auto &cell : triangulation->active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          refined += cell->refine_flag_set();
-          coarsened += cell->coarsen_flag_set();
-        }
-    refined               = Utilities::MPI::sum(refined, comm);
-    coarsened             = Utilities::MPI::sum(coarsened, comm);
-    const double children = 1 << dim;
-    const double n_cells  = triangulation->n_global_active_cells();
-    const double growth   = (children - 1.) * (refined - coarsened / children);
-    if (growth > 0.)
-      check_mesh_fits_in_memory(n_cells + growth,
-                                dim,
-                                system->get_fe().degree,
-                                scene.stores_step_matrix(),
-                                scene.n_coarse_cells(),
-                                remedy,
-                                comm,
-                                n_cells,
-                                what);
-    return refined + coarsened > 0.;
-  }
-
-
-
-  template <int dim>
   typename DiscreteProblem<dim>::Adaptation
   DiscreteProblem<dim>::adapt_mesh(const Scene<dim>            &scene,
                                    const std::function<void()> &mark_cells,
@@ -535,32 +463,6 @@ namespace dyncontact
     }
     adaptation.energy_change = energy() - energy_before;
     return adaptation;
-  }
-
-
-
-  template <int dim>
-  std::string
-  DiscreteProblem<dim>::failure_cause(const double       tau,
-                                      const std::string &failure) const
-  {
-    const double speed = udot.linfty_norm();
-    const auto   box   = GridTools::compute_bounding_box(*triangulation);
-    const double size  = box.get_boundary_points().first.distance(
-      box.get_boundary_points().second);
-    if (!(speed * tau > size))
-      return failure;
-    std::ostringstream text;
-    text << std::setprecision(3) << "the velocities (up to " << speed
-         << " m/s) move the bodies up to " << speed * tau
-         << " m in one step of " << tau << " s, " << speed * tau / size
-         << " times the size of the whole mesh (" << size
-         << " m), so that no contact can be resolved: check the scene's "
-            "initial velocities (and loads), or lower Time "
-            "integration/Time step; more active-set iterations would not "
-            "help ("
-         << failure << ")";
-    return text.str();
   }
 
 

@@ -117,7 +117,10 @@ namespace dyncontact
 
   template <int dim>
   std::unique_ptr<Scene<dim>>
-  create_scene(ParameterHandler &prm, const std::string &input_directory)
+  create_scene(ParameterHandler  &prm,
+               const std::string &input_directory,
+               const unsigned int polynomial_degree,
+               const bool         stored_step_matrix)
   {
     prm.enter_subsection("Scene");
     const std::string name = prm.get("Name");
@@ -131,12 +134,8 @@ namespace dyncontact
     std::unique_ptr<Scene<dim>> scene = info->template create<dim>();
     scene->scene_name                 = name;
     scene->input_directory            = input_directory;
-    scene->polynomial_degree          = prm.get_integer("Polynomial degree");
-    // (read, not owned: the memory estimates of the mesh need to know
-    // whether S will be stored)
-    prm.enter_subsection("Contact solver");
-    scene->stored_step_matrix = (prm.get("Step matrix") == "assembled");
-    prm.leave_subsection();
+    scene->polynomial_degree          = polynomial_degree;
+    scene->stored_step_matrix         = stored_step_matrix;
     scene->parse_parameters(prm);
     for (const std::string &subsection : scene->material_subsections())
       {
@@ -284,9 +283,15 @@ namespace dyncontact
                 const unsigned int,
                 const bool);
   template std::unique_ptr<Scene<2>>
-  create_scene<2>(ParameterHandler &, const std::string &);
+  create_scene<2>(ParameterHandler &,
+                  const std::string &,
+                  const unsigned int,
+                  const bool);
   template std::unique_ptr<Scene<3>>
-  create_scene<3>(ParameterHandler &, const std::string &);
+  create_scene<3>(ParameterHandler &,
+                  const std::string &,
+                  const unsigned int,
+                  const bool);
   template void
   merge_bodies<2>(const std::vector<const Triangulation<2, 2> *> &,
                   Triangulation<2, 2> &);

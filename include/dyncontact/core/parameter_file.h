@@ -26,17 +26,6 @@ namespace dyncontact
     std::function<void(dealii::ParameterHandler &)> declare_parameters;
   };
 
-  /// The values of the subsections that @p Owner owns (a struct with
-  /// parse_parameters(ParameterHandler &)), read from @p prm.
-  template <class Owner>
-  Owner
-  parsed(dealii::ParameterHandler &prm)
-  {
-    Owner values;
-    values.parse_parameters(prm);
-    return values;
-  }
-
   /// Every owner of parameters, in the order of declaration.
   const std::vector<ParameterOwner> &
   parameter_owners();

@@ -105,7 +105,7 @@ namespace dyncontact
 
     TimeIntegrationParameters             time_integration;
     SimulationControl                     control;
-    const Scheme                         &scheme;
+    const Scheme                         *scheme = nullptr;
     std::unique_ptr<DiscreteProblem<dim>> problem;
     std::unique_ptr<Scene<dim>>           scene;
 

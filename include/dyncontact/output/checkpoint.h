@@ -42,12 +42,17 @@ namespace dyncontact
     static void
     declare_parameters(ParameterHandler &prm);
 
+    explicit Checkpoints(const MPI_Comm comm);
+
     /// Reads subsection Checkpointing and records the critical parameters
     /// of @p prm.
     void
-    parse_parameters(ParameterHandler  &prm,
-                     const std::string &output_directory,
-                     const MPI_Comm     comm);
+    parse_parameters(ParameterHandler &prm);
+
+    /// The checkpoints are in @p output_directory/checkpoints (Output
+    /// directory, handed by its owner, GlobalParameters).
+    void
+    set_output_directory(const std::string &output_directory);
 
     bool
     resume() const
@@ -111,11 +116,11 @@ namespace dyncontact
     std::string
     advice_beside(const std::string &directory) const;
 
-    std::string  root;
-    MPI_Comm     comm             = MPI_COMM_SELF;
-    bool         resume_run       = false;
-    unsigned int interval_steps   = 0;
-    double       interval_minutes = 0.;
+    std::string    root;
+    const MPI_Comm comm;
+    bool           resume_run       = false;
+    unsigned int   interval_steps   = 0;
+    double         interval_minutes = 0.;
     /// The parameters a resumed run must share with its checkpoint, as text.
     std::string critical_parameters;
   };

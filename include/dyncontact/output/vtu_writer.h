@@ -31,9 +31,9 @@ namespace dyncontact
               {"Output/Cells per piece", "Output/Write vtu = false"}};
     }
 
-    /// Takes Output/Write vtu, Compression and Cells per piece.
-    void
-    parse_parameters(const OutputParameters &parameters);
+    /// Takes Output/Write vtu, Compression and Cells per piece (handed by
+    /// their owner, OutputParameters).
+    explicit VtuWriter(const OutputParameters &parameters);
 
     bool
     is_enabled() const

@@ -39,20 +39,37 @@ namespace dyncontact
   class DiscreteProblem : public SteppedProblem
   {
   public:
-    /// Reads the parameters of the contact rows and the active-set solver
-    /// from @p prm; @p numerical_dissipation: theta of the integrator
-    /// (Time integration/Numerical dissipation); @p system_parameters: the
-    /// polynomial degree and the mass matrix; @p serial_triangulation:
-    /// deal.II's Triangulation instead of p4est's (Mesh/Triangulation =
-    /// serial, one rank only).
-    DiscreteProblem(
-      ParameterHandler                                   &prm,
-      const Scheme                                       &scheme,
-      const double                                        numerical_dissipation,
-      const typename SemiDiscreteSystem<dim>::Parameters &system_parameters,
-      const ConditionalOStream                           &pcout,
-      const MPI_Comm                                      comm,
-      const bool serial_triangulation = false);
+    /// What it is handed by the owners of the entries.
+    struct Parameters
+    {
+      /// Polynomial degree and Time integration/Mass matrix.
+      typename SemiDiscreteSystem<dim>::Parameters system;
+      /// Time integration/Numerical dissipation theta, for the integrator.
+      double numerical_dissipation = 0.;
+      /// Mesh/Triangulation = serial: deal.II's Triangulation instead of
+      /// p4est's (one rank only).
+      bool serial_triangulation = false;
+    };
+
+    /// The triangulation; the rest is made by parse_parameters().
+    DiscreteProblem(const Scheme             &scheme,
+                    const Parameters         &parameters,
+                    const ConditionalOStream &pcout,
+                    const MPI_Comm            comm);
+
+    /// Reads the subsections it owns, Contact solver (the active-set
+    /// solver) and Contact (the contact rows), and makes the system (and
+    /// the multigrid's linear level).
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether the step matrix is assembled and stored (Contact
+    /// solver/Step matrix = assembled).
+    bool
+    assembles_step_matrix() const
+    {
+      return !solver_parameters.matrix_free_step;
+    }
 
     ~DiscreteProblem();
 
@@ -311,10 +328,9 @@ namespace dyncontact
     const MPI_Comm                            comm;
     const ConditionalOStream                  pcout;
     const Scheme                             &scheme;
-    /// Time integration/Numerical dissipation theta, for the integrator.
-    const double                             numerical_dissipation;
-    ActiveSetSolver::Parameters              solver_parameters;
-    std::unique_ptr<SemiDiscreteSystem<dim>> system;
+    const Parameters                          parameters;
+    ActiveSetSolver::Parameters               solver_parameters;
+    std::unique_ptr<SemiDiscreteSystem<dim>>  system;
     /// 'Contact solver/Preconditioner = multigrid': the same mesh with
     /// linear elements, and the p-multigrid between the two
     std::unique_ptr<SemiDiscreteSystem<dim>> coarse_system;

@@ -78,7 +78,10 @@ namespace dyncontact
 
   template <int dim>
   std::unique_ptr<Scene<dim>>
-  create_scene(ParameterHandler &prm, const std::string &input_directory);
+  create_scene(ParameterHandler  &prm,
+               const std::string &input_directory,
+               const unsigned int polynomial_degree,
+               const bool         stored_step_matrix);
 
   /// The exact solution at one point and time, where a scene knows it.
   template <int dim>
@@ -309,7 +312,9 @@ namespace dyncontact
 
     friend std::unique_ptr<Scene<dim>>
     create_scene<dim>(ParameterHandler  &prm,
-                      const std::string &input_directory);
+                      const std::string &input_directory,
+                      const unsigned int polynomial_degree,
+                      const bool         stored_step_matrix);
   };
 
   extern template class PluginRegistry<Scene>;
@@ -320,10 +325,16 @@ namespace dyncontact
 
   /// Creates the scene named in "Scene/Name", reads its parameters and the
   /// materials of its bodies; relative file names in the scene's parameters
-  /// are relative to @p input_directory (the prm file's folder).
+  /// are relative to @p input_directory (the prm file's folder). The
+  /// memory estimates of its mesh are handed what they need by the owners
+  /// of the entries: the Polynomial degree and whether the step matrix is
+  /// stored (Contact solver/Step matrix = assembled).
   template <int dim>
   std::unique_ptr<Scene<dim>>
-  create_scene(ParameterHandler &prm, const std::string &input_directory);
+  create_scene(ParameterHandler  &prm,
+               const std::string &input_directory,
+               const unsigned int polynomial_degree,
+               const bool         stored_step_matrix);
 
   /**
    * Builds @p scene's mesh in @p triangulation: its coarse mesh, then
