@@ -9,7 +9,8 @@
 #   bash tools/setup.sh --tests  and what the test suite needs besides:
 #                                Python 3 with matplotlib (study plots),
 #                                ParaView's pvpython and Xvfb (the ParaView
-#                                test), installed while the build runs
+#                                test), installed while the library and the
+#                                test executables are built
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -52,9 +53,13 @@ fi
 # Open MPI refuses to run as root unless told otherwise
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
+# with --tests, the test executables too: they need none of the test
+# packages, which are installed meanwhile
+targets=(all)
+[ "${1:-}" = "--tests" ] && targets+=(test_executables)
 status=0
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  && cmake --build build -j "$(nproc)" || status=$?
+  && cmake --build build -j "$(nproc)" --target "${targets[@]}" || status=$?
 if [ -n "$installer" ]; then
   if ! wait "$installer"; then
     cat build/install-test-packages.log

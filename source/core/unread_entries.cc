@@ -1,6 +1,7 @@
 #include <dyncontact/core/parameter_file.h>
 #include <dyncontact/core/simulator.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/output/reference_states.h>
 #include <dyncontact/output/vtu_writer.h>
 #include <dyncontact/scenes/interface.h>
 
