@@ -77,6 +77,12 @@ main(int argc, char **argv)
     {"refinement_levels_inverted",
      "subsection Mesh refinement\n  set Minimum level = 3\n"
      "  set Maximum level = 1\nend\n"},
+    // (two bad entries: the message names the one read first, as it did
+    // before the components' parameters were read in another order)
+    {"time_step_zero_and_levels_inverted",
+     "subsection Time integration\n  set Time step = 0\nend\n"
+     "subsection Mesh refinement\n  set Minimum level = 3\n"
+     "  set Maximum level = 1\nend\n"},
     {"reference_with_adaptive_mesh",
      "subsection Mesh refinement\n  set Refinement interval = 2\nend\n"
      "subsection Reference solution\n  set Compare with states = true\nend\n"},

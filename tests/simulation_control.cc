@@ -104,7 +104,7 @@ private:
 };
 
 /// No output times, checkpoints or mesh adaptation.
-const SimulationControl::Parameters no_intervals = {0., 0, 0., 0};
+const SimulationControl::Parameters no_intervals = {0., 0, 0.};
 
 int
 main(int argc, char **argv)
@@ -248,7 +248,8 @@ main(int argc, char **argv)
           "set Time step = 0.25\nset End time = 1\nset Time step "
           "adaptation = true");
     SimulationControl control(MPI_COMM_WORLD, pcout);
-    control.parse_parameters(parameters, {0.5, 3, 0., 2}, false);
+    control.parse_parameters(parameters, {0.5, 3, 0.}, false);
+    control.set_refinement_interval(2);
     MockProblem problem;
     problem.n_failures = 2;
     auto outcome       = control.advance(problem, timer);

@@ -43,14 +43,10 @@ namespace dyncontact
     output.parse_parameters(prm);
     checkpoints.parse_parameters(prm);
     checkpoints.set_output_directory(parameters.output_directory);
-    mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
-    mesh_adaptor->parse_parameters(prm);
-
     SimulationControl::Parameters intervals;
-    intervals.output_interval     = output.output_interval;
-    intervals.checkpoint_steps    = checkpoints.interval_in_steps();
-    intervals.checkpoint_minutes  = checkpoints.interval_in_minutes();
-    intervals.refinement_interval = mesh_adaptor->get_refinement_interval();
+    intervals.output_interval    = output.output_interval;
+    intervals.checkpoint_steps   = checkpoints.interval_in_steps();
+    intervals.checkpoint_minutes = checkpoints.interval_in_minutes();
     control.parse_parameters(time_integration, intervals, scheme->is_static);
 
     typename DiscreteProblem<dim>::Parameters discretization;
@@ -64,6 +60,9 @@ namespace dyncontact
                                                      pcout,
                                                      comm);
     problem->parse_parameters(prm);
+    mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
+    mesh_adaptor->parse_parameters(prm);
+    control.set_refinement_interval(mesh_adaptor->get_refinement_interval());
 
     vtu_writer       = std::make_unique<VtuWriter<dim>>(output);
     reference_states = std::make_unique<ReferenceStates<dim>>();

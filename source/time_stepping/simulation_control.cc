@@ -41,9 +41,8 @@ namespace dyncontact
                 ExcMessage("Output/Output interval must be a finite number "
                            ">= 0 (s); got " +
                            format_number(output_interval) + "."));
-    checkpoint_steps    = parameters.checkpoint_steps;
-    checkpoint_minutes  = parameters.checkpoint_minutes;
-    refinement_interval = parameters.refinement_interval;
+    checkpoint_steps   = parameters.checkpoint_steps;
+    checkpoint_minutes = parameters.checkpoint_minutes;
 
     is_static   = static_problem;
     step        = 0;

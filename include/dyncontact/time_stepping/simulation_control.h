@@ -120,14 +120,12 @@ namespace dyncontact
     /// The values it is handed by the owners of their subsections
     /// besides Time integration: Output/Output interval
     /// (OutputParameters), Checkpointing/Interval in steps and Interval in
-    /// minutes (Checkpoints), Mesh refinement/Refinement interval
-    /// (MeshAdaptor).
+    /// minutes (Checkpoints).
     struct Parameters
     {
-      double       output_interval     = 0.05;
-      unsigned int checkpoint_steps    = 0;
-      double       checkpoint_minutes  = 0.;
-      unsigned int refinement_interval = 0;
+      double       output_interval    = 0.05;
+      unsigned int checkpoint_steps   = 0;
+      double       checkpoint_minutes = 0.;
     };
 
     /// @p pcout: for the warnings of retried steps (copied).
@@ -187,6 +185,15 @@ namespace dyncontact
     /// time on (the last one may end after the end time).
     double
     steps_to_end(const double tau) const;
+
+    /// The mesh adapts after every @p interval-th step (0: never):
+    /// Mesh refinement/Refinement interval, handed by its owner, MeshAdaptor,
+    /// after it has read it.
+    void
+    set_refinement_interval(const unsigned int interval)
+    {
+      refinement_interval = interval;
+    }
 
     /// Whether the mesh is due to adapt after step @p n (Refinement
     /// interval), the last step included (a resumed run adapts after it).
