@@ -163,7 +163,7 @@ main(int argc, char **argv)
     std::map<std::string, std::string> state;
     ContactRows                        rows;
     VectorType                         flags;
-    const auto        vectors = control.save(state, rows, flags, flags);
+    const auto        vectors = control.save(state, rows, flags);
     SimulationControl resumed(MPI_COMM_WORLD, pcout);
     parse(parameters,
           "set Time step = 0.3\nset End time = 2\nset Time step control = "

@@ -209,7 +209,7 @@ namespace dyncontact
     DiscreteProblem<dim>              &p     = *problem;
     VectorType                         flags = p.active_set_flags();
     const std::vector<VectorType>      controller_vectors =
-      control.save(state, p.get_contact().get_rows(), flags, flags);
+      control.save(state, p.get_contact().get_rows(), flags);
     p.save(Checkpoints::mesh_file(dir), flags, controller_vectors);
     postprocessors->save(state);
     mesh_adaptor->save(state);

@@ -1,11 +1,9 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/grid/grid_tools.h>
 
 #include <dyncontact/base/memory_check.h>
 #include <dyncontact/base/triangulation.h>
 #include <dyncontact/base/vector_copy.h>
 #include <dyncontact/contact/contact_setup.h>
-#include <dyncontact/discretization/rigid_motions.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/problem/discrete_problem.h>
 #include <dyncontact/scenes/interface.h>
@@ -13,8 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 namespace dyncontact
 {
@@ -49,10 +45,8 @@ namespace dyncontact
   void
   DiscreteProblem<dim>::parse_parameters(ParameterHandler &prm)
   {
-    const double numerical_dissipation = parameters.numerical_dissipation;
-    const auto  &system_parameters     = parameters.system;
     solver_parameters.parse_parameters(prm);
-    AssertThrow(!(scheme.is_static && numerical_dissipation > 0.),
+    AssertThrow(!(scheme.is_static && parameters.numerical_dissipation > 0.),
                 ExcMessage("Time integration/Numerical dissipation > 0 is "
                            "for the dynamic schemes; the static problem "
                            "(Time integration/Scheme = " +
@@ -67,7 +61,7 @@ namespace dyncontact
                            scheme.name +
                            ") solves with the stiffness alone and AMG: set "
                            "'Step matrix' to assembled."));
-    auto discretization = system_parameters;
+    auto discretization = parameters.system;
     discretization.assembled_step_matrix =
       scheme.is_static || !solver_parameters.matrix_free_step;
     system =
@@ -75,7 +69,7 @@ namespace dyncontact
     if (solver_parameters.preconditioner ==
         ActiveSetSolver::Parameters::Preconditioner::multigrid)
       {
-        AssertThrow(system_parameters.degree >= 2,
+        AssertThrow(parameters.system.degree >= 2,
                     ExcMessage(
                       "Contact solver/Preconditioner = multigrid coarsens "
                       "the Polynomial degree to 1, but the degree is "

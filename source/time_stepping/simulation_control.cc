@@ -256,8 +256,7 @@ namespace dyncontact
   std::vector<VectorType>
   SimulationControl::save(std::map<std::string, std::string> &state,
                           const ContactRows                  &rows,
-                          VectorType                         &flags,
-                          const VectorType                   &like) const
+                          VectorType                         &flags) const
   {
     state["step"]                = std::to_string(step);
     state["time"]                = exact(time);
@@ -273,7 +272,7 @@ namespace dyncontact
       if (p < settled_rows.size() && !settled_rows[p])
         flags(rows.rows[p].eliminated_dof()) += 4.;
     flags.compress(VectorOperation::insert);
-    std::vector<VectorType> vectors(2, like);
+    std::vector<VectorType> vectors(2, flags);
     // the error estimate's last acceleration (zero if it has none)
     VectorType &acceleration = vectors[0];
     acceleration             = 0.;

@@ -8,11 +8,7 @@
 #include <dyncontact/time_stepping/row_force.h>
 #include <dyncontact/time_stepping/simulation_control.h>
 
-#include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <limits>
-#include <sstream>
 
 namespace dyncontact
 {

@@ -344,7 +344,7 @@ namespace dyncontact
      * control also each row's state (+4 at its eliminated DoF of @p flags,
      * which hold the integrator's active sets: a row that changed its
      * state in the last step), and the vectors returned, nodal vectors laid
-     * out as @p like that the checkpoint carries after u, udot and the
+     * out as @p flags that the checkpoint carries after u, udot and the
      * flags: the estimator's last acceleration (zero without history) and
      * each row's force in the last step at its eliminated DoF (so that the
      * first step after a resume locates a release as the uninterrupted run
@@ -353,8 +353,7 @@ namespace dyncontact
     std::vector<VectorType>
     save(std::map<std::string, std::string> &state,
          const ContactRows                  &rows,
-         VectorType                         &flags,
-         const VectorType                   &like) const;
+         VectorType                         &flags) const;
 
     /// How many vectors save() put into the checkpoint of @p state (older
     /// checkpoints of the adaptive control have no rows' forces).
