@@ -42,6 +42,7 @@ namespace
 {
   namespace fs = std::filesystem;
   using testing::Outcome;
+  using testing::read;
   using testing::run_in_process;
   using testing::run_program;
 
@@ -53,15 +54,6 @@ namespace
                            "subsection Output\n"
                            "  set Write vtu = false\n"
                            "end\n";
-
-  std::string
-  read(const std::string &file)
-  {
-    std::ifstream     in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
 
   /// The values of one column of a statistics.tsv file (nan if none).
   std::vector<double>
@@ -503,6 +495,12 @@ main(int argc, char **argv)
          "the checkpoint's time step tau (s) ('tau' = '1e300')",
          "edit tau"},
     {"checkpoint",
+         "statistics' columns edited (as in an earlier version's order), "
+             "checksums recomputed",
+         resume,
+         "the statistics in the checkpoint have other columns than this run's",
+         "edit columns"},
+    {"checkpoint",
          "End time before the checkpoint",
          resume + "subsection Time integration\n  set End time = 0.01\nend\n",
          "Time integration/End time = 0.01 s is not after"},
@@ -729,6 +727,8 @@ main(int argc, char **argv)
   const std::map<std::string, std::function<void()>> damages = {
     {"edit time", [&] { edit_state("time", "nan"); }},
     {"edit tau", [&] { edit_state("tau", "1e300"); }},
+    {"edit columns",
+     [&] { edit_state("statistics_columns", "step time energy_kinetic"); }},
     {"truncate data",
      [&] { fs::resize_file(ck_step + "/mesh_fixed.data", 100); }},
     {"flip data",

@@ -18,15 +18,7 @@ namespace
 {
   using testing::check;
   using testing::log;
-
-  std::string
-  read(const std::string &file)
-  {
-    std::ifstream     in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
+  using testing::read;
 
   /// The numbers in the line of @p text that starts with @p key.
   std::vector<double>

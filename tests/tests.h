@@ -45,6 +45,16 @@ namespace testing
     return n;
   }
 
+  /// The whole content of @p file ("" if it cannot be read).
+  inline std::string
+  read(const std::string &file)
+  {
+    std::ifstream     in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
   /// The file "output" on rank 0, a null stream elsewhere.
   inline std::ostream &
   log()

@@ -104,7 +104,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(ContactZone,
                                              "contact zone",
-                                             30,
                                              "the cells near slave nodes "
                                              "close to contact and at their "
                                              "images, always refined")

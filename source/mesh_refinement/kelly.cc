@@ -40,12 +40,10 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(KellyDisplacement,
                                              "kelly displacement",
-                                             10,
                                              "Kelly's indicator of the "
                                              "displacement")
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(KellyVelocity,
                                              "kelly velocity",
-                                             20,
                                              "Kelly's indicator of the "
                                              "velocity")
   } // namespace MeshRefinement

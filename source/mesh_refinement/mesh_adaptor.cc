@@ -86,7 +86,8 @@ namespace dyncontact
       "kelly velocity, contact zone",
       Patterns::MultipleSelection(
         PluginRegistry<MeshRefinement::Interface>::names("|")),
-      "Refinement criteria (indicators of several criteria are added): " +
+      "Refinement criteria, in the order they run (indicators of several "
+      "criteria are added): " +
         documentation + ".");
     prm.declare_entry("Initial contact refinements",
                       "0",
@@ -132,17 +133,19 @@ namespace dyncontact
                 ExcMessage("Mesh refinement/Criteria must name at least one "
                            "criterion when the mesh adapts."));
 
-    // the criteria in their registered order
+    // the criteria in the order of the list, each once
     criteria.clear();
     criterion_names.clear();
-    for (const auto &info :
-         PluginRegistry<MeshRefinement::Interface>::plugins())
-      if (std::find(selected.begin(), selected.end(), info.name) !=
-          selected.end())
+    for (const auto &name : selected)
+      if (std::find(criterion_names.begin(), criterion_names.end(), name) ==
+          criterion_names.end())
         {
-          criteria.push_back(info.template create<dim>());
+          const auto *info =
+            PluginRegistry<MeshRefinement::Interface>::find(name);
+          Assert(info != nullptr, ExcInternalError()); // (the pattern)
+          criteria.push_back(info->template create<dim>());
           criteria.back()->parse_parameters(prm);
-          criterion_names.push_back(info.name);
+          criterion_names.push_back(name);
         }
     const auto *zone =
       PluginRegistry<MeshRefinement::Interface>::find("contact zone");

@@ -33,7 +33,6 @@ namespace dyncontact
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(
       RecoveryDisplacement,
       "recovery displacement",
-      24,
       "Zienkiewicz and Zhu's indicator of the displacement, "
       "||G u - grad u|| on each cell with G u the recovered (nodally "
       "averaged) gradient; it sees the jumps Kelly's indicator sees, "
@@ -41,7 +40,6 @@ namespace dyncontact
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(
       RecoveryVelocity,
       "recovery velocity",
-      26,
       "Zienkiewicz and Zhu's indicator of the velocity (as recovery "
       "displacement)")
   } // namespace MeshRefinement

@@ -65,7 +65,6 @@ namespace dyncontact
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(
       VelocityJump,
       "velocity jump",
-      28,
       "the largest difference of the velocity between the nodes of a "
       "cell: the jump a wave front carries, as large on a coarse cell as "
       "on a fine one, so that the front is refined before the "

@@ -111,11 +111,6 @@ namespace dyncontact
         return out.str();
       }
 
-      unsigned int
-      summary_position() const override
-      {
-        return 10;
-      }
 
       std::vector<std::string>
       columns() const override
@@ -243,7 +238,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Contact,
                                       "contact",
-                                      30,
                                       "active set, contact force and "
                                       "pressure, penetration")
 
@@ -318,11 +312,6 @@ namespace dyncontact
         return out.str();
       }
 
-      unsigned int
-      summary_position() const override
-      {
-        return 11;
-      }
 
       std::vector<std::string>
       columns() const override
@@ -373,7 +362,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(ContactPairs,
                                       "contact pairs",
-                                      31,
                                       "active rows, contact force and meas "
                                       "Gamma* of each contact pair")
   } // namespace Postprocess

@@ -38,11 +38,6 @@ namespace dyncontact
         return out.str();
       }
 
-      unsigned int
-      summary_position() const override
-      {
-        return 30;
-      }
 
       std::vector<std::string>
       columns() const override
@@ -86,7 +81,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(CriticalSet,
                                       "critical set",
-                                      40,
                                       "meas Gamma* (eq. 40), its sum "
                                       "(Assumption 4.7), velocity correction")
   } // namespace Postprocess

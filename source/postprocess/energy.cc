@@ -89,11 +89,6 @@ namespace dyncontact
         return out.str();
       }
 
-      unsigned int
-      summary_position() const override
-      {
-        return 20;
-      }
 
       std::vector<std::string>
       columns() const override
@@ -226,7 +221,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Energy,
                                       "energy",
-                                      10,
                                       "kinetic and elastic energy, viscous "
                                       "dissipation (Theorem 3.2)")
 
@@ -287,7 +281,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(BodyEnergy,
                                       "body energy",
-                                      11,
                                       "kinetic and elastic energy of each "
                                       "body")
   } // namespace Postprocess

@@ -64,11 +64,6 @@ namespace dyncontact
         return error_summary(s, "error_energy_norm");
       }
 
-      unsigned int
-      summary_position() const override
-      {
-        return 40;
-      }
 
       std::vector<std::string>
       columns() const override
@@ -160,7 +155,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(ErrorNorm,
                                       "error energy norm",
-                                      100,
                                       "energy-norm error against the exact "
                                       "solution (eqs. 22-24)")
   } // namespace Postprocess

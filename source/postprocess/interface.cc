@@ -50,9 +50,11 @@ namespace dyncontact
         Patterns::MultipleSelection("all|" +
                                     PluginRegistry<Interface>::names("|")),
         "The statistics (groups of columns of statistics.tsv) to compute, "
-        "comma-separated, or 'all': every one that applies to the run. A "
-        "statistic named here must apply (e.g. 'error energy norm' needs "
-        "a scene with an exact solution). " +
+        "comma-separated, or 'all': every one that applies to the run. They "
+        "run in the order of the list ('all': in the order of their names), "
+        "and their columns in statistics.tsv and their lines in summary.txt "
+        "come in that order. A statistic named here must apply (e.g. 'error "
+        "energy norm' needs a scene with an exact solution). " +
           documentation + ".");
       prm.leave_subsection();
       PluginRegistry<Interface>::declare_parameters(prm);
@@ -68,18 +70,30 @@ namespace dyncontact
       const auto chosen =
         Utilities::split_string_list(prm.get("List of postprocessors"));
       prm.leave_subsection();
-      const bool all =
-        std::find(chosen.begin(), chosen.end(), "all") != chosen.end();
       postprocessors.clear();
       listed.clear();
-      for (const auto &info : PluginRegistry<Interface>::plugins())
-        if (all ||
-            std::find(chosen.begin(), chosen.end(), info.name) != chosen.end())
+      // in the order of the list (ASPECT's way), all of them in the order of
+      // their names
+      if (std::find(chosen.begin(), chosen.end(), "all") != chosen.end())
+        for (const auto &info : PluginRegistry<Interface>::plugins())
           {
             postprocessors.push_back(info.template create<dim>());
-            postprocessors.back()->parse_parameters(prm);
-            listed.push_back(all ? "" : info.name);
+            listed.emplace_back();
           }
+      else
+        for (const auto &name : chosen)
+          {
+            AssertThrow(
+              std::find(listed.begin(), listed.end(), name) == listed.end(),
+              ExcMessage("Postprocess/List of postprocessors names '" + name +
+                         "' twice."));
+            const auto *info = PluginRegistry<Interface>::find(name);
+            Assert(info != nullptr, ExcInternalError()); // (the pattern)
+            postprocessors.push_back(info->template create<dim>());
+            listed.push_back(name);
+          }
+      for (auto &postprocessor : postprocessors)
+        postprocessor->parse_parameters(prm);
     }
 
 
@@ -88,19 +102,11 @@ namespace dyncontact
     std::string
     Manager<dim>::summary(const SummaryInput &input) const
     {
-      std::vector<const Interface<dim> *> ordered;
-      for (const auto &p : postprocessors)
-        ordered.push_back(p.get());
-      std::stable_sort(ordered.begin(),
-                       ordered.end(),
-                       [](const Interface<dim> *a, const Interface<dim> *b) {
-                         return a->summary_position() < b->summary_position();
-                       });
       std::string lines;
       if (statistics.rows.empty())
         return lines;
-      for (const Interface<dim> *p : ordered)
-        lines += p->summary(statistics, input);
+      for (const auto &postprocessor : postprocessors)
+        lines += postprocessor->summary(statistics, input);
       return lines;
     }
 
@@ -242,6 +248,10 @@ namespace dyncontact
           rows << "\n";
         }
       state["statistics"] = rows.str();
+      std::string columns;
+      for (const auto &column : statistics.columns)
+        columns += (columns.empty() ? "" : " ") + column;
+      state["statistics_columns"] = columns;
       for (const auto &postprocessor : postprocessors)
         postprocessor->save(state);
     }
@@ -253,15 +263,28 @@ namespace dyncontact
     Manager<dim>::load(const std::map<std::string, std::string> &state)
     {
       const std::string damaged =
-        "the statistics in the checkpoint are damaged, or have other "
-        "columns than this run's (a checkpoint of another version of the "
-        "program, or of another Postprocess/List of postprocessors)";
+        "the statistics in the checkpoint are damaged";
+      // the rows have no names: they are read only into the same columns
+      std::string columns;
+      for (const auto &column : statistics.columns)
+        columns += (columns.empty() ? "" : " ") + column;
+      const auto saved = state.find("statistics_columns");
+      AssertThrow(saved != state.end() && saved->second == columns,
+                  ExcMessage(
+                    "the statistics in the checkpoint have other columns "
+                    "than this run's (" +
+                    (saved == state.end() ?
+                       std::string("a checkpoint of an earlier version of "
+                                   "the program, which ordered the columns "
+                                   "otherwise") :
+                       "'" + saved->second + "' against '" + columns + "'") +
+                    "): resume with the Postprocess/List of postprocessors "
+                    "of the run that wrote it, or start afresh"));
       std::istringstream rows(state.at("statistics"));
       std::size_t        n_rows = 0;
       rows >> n_rows;
       // every value takes at least two characters: a count beyond that is
-      // damage and must not drive an allocation (the rows have no names: a
-      // checkpoint of a run with other columns reads as damaged)
+      // damage and must not drive an allocation
       AssertThrow(!rows.fail() && n_rows * statistics.columns.size() <=
                                     state.at("statistics").size() / 2,
                   ExcMessage(damaged));

@@ -28,7 +28,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(MeshSize,
                                       "mesh size",
-                                      70,
                                       "active cells and DoFs")
   } // namespace Postprocess
 } // namespace dyncontact

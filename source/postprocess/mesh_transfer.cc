@@ -38,7 +38,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(MeshTransfer,
                                       "mesh transfer",
-                                      80,
                                       "energy change and penetration of mesh "
                                       "transfers")
   } // namespace Postprocess

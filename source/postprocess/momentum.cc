@@ -77,7 +77,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Momentum,
                                       "momentum",
-                                      20,
                                       "linear momentum, total and of each "
                                       "body after the first (Theorem 3.1)")
 
@@ -133,7 +132,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(MeanDisplacement,
                                       "mean displacement",
-                                      21,
                                       "mass-weighted mean displacement of "
                                       "each body (of its centre of mass)")
   } // namespace Postprocess

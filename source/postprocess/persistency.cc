@@ -45,7 +45,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(Persistency,
                                       "persistency",
-                                      50,
                                       "normal velocity at active nodes "
                                       "(eq. 19)")
   } // namespace Postprocess

@@ -88,7 +88,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(PressureError,
                                       "pressure error",
-                                      35,
                                       "relative L2 error of the contact "
                                       "pressure of a static run against the "
                                       "scene's exact one (Hertz)")

@@ -25,11 +25,6 @@ namespace dyncontact
         return error_summary(s, "error_reference");
       }
 
-      unsigned int
-      summary_position() const override
-      {
-        return 41;
-      }
 
       std::vector<std::string>
       columns() const override
@@ -67,7 +62,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(ReferenceError,
                                       "reference error",
-                                      90,
                                       "energy-norm error against reference "
                                       "states")
   } // namespace Postprocess

@@ -28,11 +28,6 @@ namespace dyncontact
         return out.str();
       }
 
-      unsigned int
-      summary_position() const override
-      {
-        return 50;
-      }
 
       std::vector<std::string>
       columns() const override
@@ -62,7 +57,6 @@ namespace dyncontact
 
     DYNCONTACT_REGISTER_POSTPROCESSOR(SolverEffort,
                                       "solver effort",
-                                      60,
                                       "active-set and CG iterations, wall "
                                       "time, time step and its error estimate")
   } // namespace Postprocess

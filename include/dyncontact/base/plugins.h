@@ -19,16 +19,16 @@ namespace dyncontact
   /**
    * One registered plugin (a scene, a postprocessor, a refinement
    * criterion): its name (the value users give in the prm), a description
-   * for the documentation, a position that orders plugins that all run (the
-   * statistics columns), the function that declares its parameters, and
-   * factories for 2D and 3D.
+   * for the documentation, the function that declares its parameters, and
+   * factories for 2D and 3D. Plugins that run together run in the order the
+   * input lists them (all of them: in the order of their names), so that no
+   * plugin carries a number chosen against the others.
    */
   template <template <int> class Interface>
   struct PluginInfo
   {
     std::string                                     name;
     std::string                                     description;
-    double                                          position = 0.;
     std::function<void(dealii::ParameterHandler &)> declare_parameters;
     std::function<std::unique_ptr<Interface<2>>()>  create_2d;
     std::function<std::unique_ptr<Interface<3>>()>  create_3d;
@@ -48,7 +48,7 @@ namespace dyncontact
    * The registry of one kind of plugin, filled from each plugin's own file by
    * a registration macro (as ASPECT's ASPECT_REGISTER_MATERIAL_MODEL), so
    * that the code that uses the plugins names none of them. Plugins are kept
-   * sorted by position (then name).
+   * sorted by name.
    *
    * The member functions are instantiated once, in the library file of each
    * interface, so that every user sees one list.
@@ -106,8 +106,7 @@ namespace dyncontact
     std::stable_sort(plugins.begin(),
                      plugins.end(),
                      [](const auto &a, const auto &b) {
-                       return a.position < b.position ||
-                              (a.position == b.position && a.name < b.name);
+                       return a.name < b.name;
                      });
     return true;
   }
@@ -163,26 +162,24 @@ namespace dyncontact
  * constructor and a static declare_parameters(ParameterHandler &) (the
  * interfaces provide an empty one).
  */
-#define DYNCONTACT_REGISTER_PLUGIN(                  \
-  interface, classname, name, position, description) \
-  template class classname<2>;                       \
-  template class classname<3>;                       \
-  namespace                                          \
-  {                                                  \
-    const bool dyncontact_registered_##classname =   \
-      dyncontact::PluginRegistry<interface>::add(    \
-        {name,                                       \
-         description,                                \
-         position,                                   \
-         [](dealii::ParameterHandler &prm) {         \
-           classname<2>::declare_parameters(prm);    \
-         },                                          \
-         []() -> std::unique_ptr<interface<2>> {     \
-           return std::make_unique<classname<2>>();  \
-         },                                          \
-         []() -> std::unique_ptr<interface<3>> {     \
-           return std::make_unique<classname<3>>();  \
-         }});                                        \
+#define DYNCONTACT_REGISTER_PLUGIN(interface, classname, name, description) \
+  template class classname<2>;                                              \
+  template class classname<3>;                                              \
+  namespace                                                                 \
+  {                                                                         \
+    const bool dyncontact_registered_##classname =                          \
+      dyncontact::PluginRegistry<interface>::add(                           \
+        {name,                                                              \
+         description,                                                       \
+         [](dealii::ParameterHandler &prm) {                                \
+           classname<2>::declare_parameters(prm);                           \
+         },                                                                 \
+         []() -> std::unique_ptr<interface<2>> {                            \
+           return std::make_unique<classname<2>>();                         \
+         },                                                                 \
+         []() -> std::unique_ptr<interface<3>> {                            \
+           return std::make_unique<classname<3>>();                         \
+         }});                                                               \
   }
 
 #endif

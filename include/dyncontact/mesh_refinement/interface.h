@@ -89,15 +89,12 @@ namespace dyncontact
   extern template class PluginRegistry<MeshRefinement::Interface>;
 } // namespace dyncontact
 
-/// Registers a refinement criterion; @p position orders the criteria.
-#define DYNCONTACT_REGISTER_REFINEMENT_CRITERION(classname,         \
-                                                 name,              \
-                                                 position,          \
-                                                 description)       \
-  DYNCONTACT_REGISTER_PLUGIN(dyncontact::MeshRefinement::Interface, \
-                             classname,                             \
-                             name,                                  \
-                             position,                              \
+/// Registers a refinement criterion (the criteria of Mesh
+/// refinement/Criteria run in the order listed there).
+#define DYNCONTACT_REGISTER_REFINEMENT_CRITERION(classname, name, description) \
+  DYNCONTACT_REGISTER_PLUGIN(dyncontact::MeshRefinement::Interface,            \
+                             classname,                                        \
+                             name,                                             \
                              description)
 
 #endif

@@ -27,7 +27,9 @@ namespace dyncontact
      * declares its columns and fills them after every step. It runs only
      * where it applies (e.g. no error norm without an exact solution). A new
      * statistic is one file with its class and the line
-     * DYNCONTACT_REGISTER_POSTPROCESSOR(Class, "name", position, "what").
+     * DYNCONTACT_REGISTER_POSTPROCESSOR(Class, "name", "what"). Its columns
+     * and its lines of summary.txt come where it runs: in the order of
+     * Postprocess/List of postprocessors, or of the names for 'all'.
      */
     template <int dim>
     class Interface : public SimulatorAccess<dim>
@@ -91,14 +93,6 @@ namespace dyncontact
         return "";
       }
 
-      /// Orders the statistics' lines in summary.txt (their columns are
-      /// ordered by the registration's position).
-      virtual unsigned int
-      summary_position() const
-      {
-        return 0;
-      }
-
       /// Accumulators a resumed run needs (checkpoints).
       virtual void
       save(std::map<std::string, std::string> &) const
@@ -119,7 +113,9 @@ namespace dyncontact
 
     /**
      * The statistics of Postprocess/List of postprocessors (all that apply,
-     * by default), in the order of their positions: the table
+     * by default), run in the order of the list (for 'all': of their
+     * names, as ASPECT runs its postprocessors in the listed order): the
+     * table
      * (step, time, then each postprocessor's columns) and statistics.tsv,
      * written and flushed after every step on rank 0.
      */
@@ -172,11 +168,12 @@ namespace dyncontact
       check_last_row() const;
 
       /// The lines every statistic contributes to summary.txt, in the order
-      /// of their summary positions.
+      /// the statistics run.
       std::string
       summary(const SummaryInput &input) const;
 
-      /// The rows so far and every postprocessor's accumulators.
+      /// The column names, the rows so far and every postprocessor's
+      /// accumulators (load() refuses rows of other columns).
       void
       save(std::map<std::string, std::string> &state) const;
       void
@@ -197,15 +194,12 @@ namespace dyncontact
   extern template class PluginRegistry<Postprocess::Interface>;
 } // namespace dyncontact
 
-/// Registers a postprocessor; @p position orders the columns.
-#define DYNCONTACT_REGISTER_POSTPROCESSOR(classname,             \
-                                          name,                  \
-                                          position,              \
-                                          description)           \
-  DYNCONTACT_REGISTER_PLUGIN(dyncontact::Postprocess::Interface, \
-                             classname,                          \
-                             name,                               \
-                             position,                           \
+/// Registers a postprocessor (the statistics run in the order of Postprocess/
+/// List of postprocessors, or of their names).
+#define DYNCONTACT_REGISTER_POSTPROCESSOR(classname, name, description) \
+  DYNCONTACT_REGISTER_PLUGIN(dyncontact::Postprocess::Interface,        \
+                             classname,                                 \
+                             name,                                      \
                              description)
 
 #endif

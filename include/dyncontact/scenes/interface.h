@@ -386,6 +386,6 @@ namespace dyncontact
 
 /// Registers a scene (see Scene).
 #define DYNCONTACT_REGISTER_SCENE(classname, name, description) \
-  DYNCONTACT_REGISTER_PLUGIN(dyncontact::Scene, classname, name, 0, description)
+  DYNCONTACT_REGISTER_PLUGIN(dyncontact::Scene, classname, name, description)
 
 #endif
