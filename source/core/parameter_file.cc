@@ -203,7 +203,7 @@ namespace dyncontact
        &TimeIntegrationParameters::declare_parameters},
       {"Material",
        [](ParameterHandler &prm) {
-         Material::declare_parameters(prm, "Material");
+         Material::declare_parameters(prm, "Material", true);
          Material::declare_parameters(prm, "Material of body 2");
        }},
       {"ActiveSetSolver", &ActiveSetSolver::Parameters::declare_parameters},

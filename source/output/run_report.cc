@@ -58,7 +58,21 @@ namespace dyncontact
                "viscoelastic (Kelvin-Voigt, viscous form B)" :
                "elastic (no viscous form)")
          << ", " << (system.matrices().lumped_mass() ? "lumped" : "consistent")
-         << " mass\n   solver: active set, CG with "
+         << " mass\n";
+    // each body's material where they differ
+    if (!scene.one_material())
+      for (unsigned int b = 0; b < scene.n_bodies(); ++b)
+        {
+          const Material &m = scene.material(b);
+          text << "     body " << b + 1 << ": E = " << m.youngs_modulus
+               << " Pa, nu = " << m.poissons_ratio << ", rho = " << m.density
+               << " kg/m^3";
+          if (m.is_viscous())
+            text << ", mu_v = " << m.viscous_shear_modulus
+                 << " Pa s, lambda_v = " << m.viscous_lambda << " Pa s";
+          text << "\n";
+        }
+    text << "   solver: active set, CG with "
          << integrator.preconditioner_name()
          << (integrator.matrix_free() ? " on the matrix-free step operator" :
                                         "");

@@ -210,8 +210,8 @@ namespace dyncontact
   BarChain<dim>::has_exact_solution() const
   {
     const Material &mat = this->material(0);
-    return mat.poissons_ratio == 0. && !mat.is_viscous() &&
-           impact_velocity > 0.;
+    return this->one_material() && mat.poissons_ratio == 0. &&
+           !mat.is_viscous() && impact_velocity > 0.;
   }
 
 

@@ -100,8 +100,9 @@ namespace dyncontact
                       "by ';' (e.g. '1; 2; 3, 4': three bodies, the third of "
                       "tags 3 and 4), instead of Body 1 tags and Body 2 "
                       "tags. Body 1 is of subsection Material, every other "
-                      "of Material of body 2. Empty: Body 1 tags and Body 2 "
-                      "tags.");
+                      "of Material of body 2, unless the entries of "
+                      "Material are lists of one value per body. Empty: "
+                      "Body 1 tags and Body 2 tags.");
     prm.declare_entry("Contact tags",
                       "",
                       Patterns::Anything(),

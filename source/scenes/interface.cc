@@ -54,6 +54,17 @@ namespace dyncontact
 
   template <int dim>
   bool
+  Scene<dim>::one_material() const
+  {
+    return std::all_of(materials.begin(),
+                       materials.end(),
+                       [&](const Material &m) { return m == materials[0]; });
+  }
+
+
+
+  template <int dim>
+  bool
   Scene<dim>::is_viscous() const
   {
     bool viscous = false;
@@ -68,6 +79,10 @@ namespace dyncontact
   std::vector<std::pair<std::string, std::string>>
   Scene<dim>::unread_entries() const
   {
+    if (materials_per_body)
+      return {{"Material of body 2",
+               "the lists in subsection Material give each body its "
+               "material"}};
     const auto subsections = material_subsections();
     if (std::find(subsections.begin(),
                   subsections.end(),
@@ -137,12 +152,18 @@ namespace dyncontact
     scene->polynomial_degree          = polynomial_degree;
     scene->stored_step_matrix         = stored_step_matrix;
     scene->parse_parameters(prm);
-    for (const std::string &subsection : scene->material_subsections())
-      {
-        Material material;
-        material.parse_parameters(prm, subsection);
-        scene->materials.push_back(material);
-      }
+    // lists in Material give each body its own; else each body reads the
+    // subsection the scene names
+    scene->materials =
+      Material::parse_per_body(prm, scene->n_bodies(), "Material");
+    scene->materials_per_body = !scene->materials.empty();
+    if (!scene->materials_per_body)
+      for (const std::string &subsection : scene->material_subsections())
+        {
+          Material material;
+          material.parse_parameters(prm, subsection);
+          scene->materials.push_back(material);
+        }
     return scene;
   }
 

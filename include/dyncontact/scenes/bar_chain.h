@@ -45,7 +45,8 @@ namespace dyncontact
       return n_chain + 1;
     }
 
-    /// All bars are of the material of subsection "Material".
+    /// All bars are of the material of subsection "Material" (lists there
+    /// can give each its own; the exact solution then does not apply).
     std::vector<std::string>
     material_subsections() const override
     {

@@ -170,9 +170,15 @@ namespace dyncontact
     unread_entries() const;
 
     /// The material subsection of each body: by default "Material" for
-    /// body 1 and "Material of body 2" for every other.
+    /// body 1 and "Material of body 2" for every other. (Lists of one value
+    /// per body in subsection Material override it.)
     virtual std::vector<std::string>
     material_subsections() const;
+
+    /// Whether all bodies are of one material (a scene's exact solution
+    /// may need it).
+    bool
+    one_material() const;
 
     const Material &
     material(const unsigned int body) const
@@ -309,6 +315,8 @@ namespace dyncontact
   private:
     std::string           scene_name;
     std::vector<Material> materials;
+    /// Whether the materials came from lists in subsection Material.
+    bool materials_per_body = false;
 
     friend std::unique_ptr<Scene<dim>>
     create_scene<dim>(ParameterHandler  &prm,

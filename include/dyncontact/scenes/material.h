@@ -2,6 +2,7 @@
 #define dyncontact_scenes_material_h
 
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -53,15 +54,39 @@ namespace dyncontact
     p_wave_speed() const;
 
 
-    /// Declares the subsection (by default "Material") with its entries.
+    bool
+    operator==(const Material &other) const;
+
+    /// Declares the subsection (by default "Material") with its entries;
+    /// with @p lists each entry takes one value or a comma-separated list
+    /// of one value per body (as ASPECT's lists per compositional field).
     static void
     declare_parameters(dealii::ParameterHandler &prm,
-                       const std::string        &subsection = "Material");
+                       const std::string        &subsection = "Material",
+                       const bool                lists      = false);
 
-    /// Reads the subsection and checks every value's range.
+    /// Reads the subsection (each entry one value) and checks every value's
+    /// range.
     void
     parse_parameters(dealii::ParameterHandler &prm,
                      const std::string        &subsection = "Material");
+
+    /// The materials of @p n_bodies bodies from the lists of @p subsection
+    /// (declared with lists): an entry of one value holds for every body, an
+    /// entry of @p n_bodies values gives body k its k-th; another length, a
+    /// value that is not a number or out of its range stops with a message
+    /// naming the entry (and the body). Empty if every entry has one value
+    /// (the scene then says which subsection each body reads).
+    static std::vector<Material>
+    parse_per_body(dealii::ParameterHandler &prm,
+                   const unsigned int        n_bodies,
+                   const std::string        &subsection = "Material");
+
+  private:
+    /// Stops with a message naming the entry of @p subsection (and @p
+    /// of_body, e.g. " of body 3") if a value is out of its range.
+    void
+    check(const std::string &subsection, const std::string &of_body = "") const;
   };
 } // namespace dyncontact
 

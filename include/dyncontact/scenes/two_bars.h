@@ -36,7 +36,8 @@ namespace dyncontact
       return 2;
     }
 
-    /// Both bars are of the material of subsection "Material".
+    /// Both bars are of the material of subsection "Material" (lists there
+    /// can give each its own; the exact solution then does not apply).
     std::vector<std::string>
     material_subsections() const override
     {
