@@ -122,6 +122,10 @@ namespace dyncontact
                       "With Bodies: the contact pairs as 'slave : master' "
                       "body numbers, comma-separated (e.g. '2 : 1, 3 : 2'); "
                       "a pair's surfaces are the Contact tags of its bodies, "
+                      "or those of them it names in parentheses after the "
+                      "body (e.g. '2 (12) : 1 (11), 2 (14 15) : 3': a body "
+                      "can meet different bodies with different surfaces; "
+                      "every contact tag must be in a pair), "
                       "its slave's nodes carry the rows (Contact/Slave "
                       "side must then be auto), and a slave node "
                       "that finds a master surface in two pairs keeps the "
@@ -198,6 +202,7 @@ namespace dyncontact
     velocity.clear();
     pairs.clear();
     obstacle_slaves.clear();
+    obstacle_tags.clear();
     pairs_listed = !bodies.empty();
     if (bodies.empty())
       parse_two_bodies(prm);
@@ -270,7 +275,7 @@ namespace dyncontact
                              " needs Scene/Gmsh/Bodies and a pair 'body : "
                              "obstacle' in Scene/Gmsh/Contact pairs."));
     if (!contact_tags[0].empty())
-      pairs.push_back({0, 1, 0.});
+      pairs.push_back({0, 1, 0., contact_tags[0], contact_tags[1]});
   }
 
 
@@ -350,13 +355,44 @@ namespace dyncontact
 
 
 
+  namespace
+  {
+    /// The items of @p list separated by ',' outside parentheses.
+    std::vector<std::string>
+    split_pair_list(const std::string &list)
+    {
+      std::vector<std::string> items(1);
+      int                      depth = 0;
+      for (const char c : list)
+        {
+          depth += (c == '(') - (c == ')');
+          if (c == ',' && depth == 0)
+            items.emplace_back();
+          else
+            items.back() += c;
+        }
+      for (auto &item : items)
+        item = Utilities::trim(item);
+      if (items.size() == 1 && items[0].empty())
+        return {};
+      return items;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   GmshScene<dim>::parse_contact_pairs(ParameterHandler &prm)
   {
     const unsigned int n    = body_tags.size();
     const std::string  list = prm.get("Contact pairs");
-    for (const std::string &item : Utilities::split_string_list(list, ','))
+    const std::string  form =
+      "' is no pair 'slave : master' of body numbers (the master can be "
+      "'obstacle'), or 'slave : master : search radius'; a body may name "
+      "the contact tags the pair uses in parentheses, e.g. '2 (12) : 1 "
+      "(11, 13)'.";
+    for (const std::string &item : split_pair_list(list))
       {
         const auto sides = split_items(item, ':');
         AssertThrow(sides.size() < 2 || sides[0] != "obstacle",
@@ -364,36 +400,54 @@ namespace dyncontact
                                "' makes the rigid obstacle the slave; it "
                                "can only be the master (write 'body : "
                                "obstacle')."));
-        std::array<long, 2> body{{0, 0}};
-        double              radius = 0.;
-        bool                valid  = sides.size() == 2 || sides.size() == 3;
-        for (unsigned int k = 0; valid && k < 2; ++k)
+        AssertThrow(sides.size() == 2 || sides.size() == 3,
+                    ExcMessage("Scene/Gmsh/Contact pairs: '" + item + form));
+        const bool with_obstacle = sides[1] == "obstacle";
+        // each side: a body number, and the tags in parentheses, if any
+        std::array<long, 2>                   body{{0, 0}};
+        std::array<std::set<unsigned int>, 2> named;
+        for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
           {
-            char *end = nullptr;
-            body[k]   = std::strtol(sides[k].c_str(), &end, 10);
-            valid     = !sides[k].empty() && *end == '\0';
-            if (k == 1 && sides[k] == "obstacle")
+            std::string       side  = sides[k];
+            const std::size_t open  = side.find('(');
+            bool              valid = true;
+            if (open != std::string::npos)
               {
-                body[k] = 0;
-                valid   = true;
+                valid = side.back() == ')';
+                if (valid)
+                  {
+                    std::string inside =
+                      side.substr(open + 1, side.size() - open - 2);
+                    std::replace(inside.begin(), inside.end(), ' ', ',');
+                    std::string tags;
+                    for (const auto &t : Utilities::split_string_list(inside))
+                      if (!t.empty())
+                        tags += (tags.empty() ? "" : ",") + t;
+                    named[k] =
+                      parse_tags(tags, "Contact pairs ('" + item + "')");
+                    valid = !named[k].empty();
+                  }
+                side = Utilities::trim(side.substr(0, open));
               }
+            char *end = nullptr;
+            body[k]   = std::strtol(side.c_str(), &end, 10);
+            AssertThrow(valid && !side.empty() && *end == '\0',
+                        ExcMessage("Scene/Gmsh/Contact pairs: '" + item +
+                                   form));
           }
-        if (valid && sides.size() == 3)
+        double radius = 0.;
+        if (sides.size() == 3)
           {
             char *end = nullptr;
             radius    = std::strtod(sides[2].c_str(), &end);
-            valid     = !sides[2].empty() && *end == '\0';
+            AssertThrow(!sides[2].empty() && *end == '\0',
+                        ExcMessage("Scene/Gmsh/Contact pairs: '" + item +
+                                   form));
           }
-        AssertThrow(valid,
-                    ExcMessage("Scene/Gmsh/Contact pairs: '" + item +
-                               "' is no pair 'slave : master' of body "
-                               "numbers (the master can be 'obstacle'), "
-                               "or 'slave : master : search radius'."));
-        const bool with_obstacle = sides[1] == "obstacle";
         for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
           AssertThrow(body[k] >= 1 && body[k] <= long(n),
                       ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
-                                 "' names body " + sides[k] +
+                                 "' names body " + std::to_string(body[k]) +
                                  ", but Scene/Gmsh/Bodies has bodies 1 "
                                  "to " +
                                  std::to_string(n) + "."));
@@ -411,33 +465,71 @@ namespace dyncontact
                     ExcMessage("Scene/Gmsh/Contact pairs: the search "
                                "radius of the pair '" +
                                item + "' must lie in (0, 1e15] m."));
+        // the tags of each side: those named, which must be the body's
+        // contact tags, or all of them
+        std::array<std::vector<types::boundary_id>, 2> tags;
+        for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
+          {
+            const auto &own = contact_tags[body[k] - 1];
+            AssertThrow(!own.empty(),
+                        ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                   item + "' names body " +
+                                   std::to_string(body[k]) +
+                                   ", which has no Scene/Gmsh/Contact "
+                                   "tags."));
+            for (const unsigned int tag : named[k])
+              {
+                std::string list_of_own;
+                for (const auto t : own)
+                  list_of_own +=
+                    (list_of_own.empty() ? "" : ", ") + std::to_string(t);
+                AssertThrow(std::find(own.begin(), own.end(), tag) != own.end(),
+                            ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
+                                       item + "' names tag " +
+                                       std::to_string(tag) + " of body " +
+                                       std::to_string(body[k]) +
+                                       ", which is not among its "
+                                       "Scene/Gmsh/Contact tags (" +
+                                       list_of_own + ")."));
+              }
+            tags[k] = named[k].empty() ?
+                        own :
+                        std::vector<types::boundary_id>(named[k].begin(),
+                                                        named[k].end());
+          }
         const unsigned int slave  = body[0] - 1;
         const unsigned int master = with_obstacle ? 0 : body[1] - 1;
         if (with_obstacle)
           {
-            AssertThrow(obstacle_slaves.insert(slave).second,
+            bool added = false;
+            for (const auto tag : tags[0])
+              added = obstacle_tags.insert(tag).second || added;
+            AssertThrow(added,
                         ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
-                                   item + "' is listed twice."));
+                                   item +
+                                   "' is listed twice (its tags already meet "
+                                   "the obstacle)."));
+            obstacle_slaves.insert(slave);
           }
         else
           {
+            const auto sorted = [](std::vector<types::boundary_id> v) {
+              std::sort(v.begin(), v.end());
+              return v;
+            };
             for (const BodyPair &pair : pairs)
-              AssertThrow(std::minmax(pair.slave, pair.master) !=
-                            std::minmax(slave, master),
-                          ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
-                                     item +
-                                     "' is listed twice (a pair of two "
-                                     "bodies is listed once, either "
-                                     "way)."));
+              AssertThrow(!((pair.slave == slave && pair.master == master &&
+                             sorted(pair.slave_tags) == sorted(tags[0]) &&
+                             sorted(pair.master_tags) == sorted(tags[1])) ||
+                            (pair.slave == master && pair.master == slave &&
+                             sorted(pair.slave_tags) == sorted(tags[1]) &&
+                             sorted(pair.master_tags) == sorted(tags[0]))),
+                          ExcMessage(
+                            "Scene/Gmsh/Contact pairs: the pair '" + item +
+                            "' is listed twice (a pair of two surfaces is "
+                            "listed once, either way)."));
+            pairs.push_back({slave, master, radius, tags[0], tags[1]});
           }
-        for (unsigned int k = 0; k < (with_obstacle ? 1 : 2); ++k)
-          AssertThrow(!contact_tags[body[k] - 1].empty(),
-                      ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
-                                 "' names body " + std::to_string(body[k]) +
-                                 ", which has no Scene/Gmsh/Contact "
-                                 "tags."));
-        if (!with_obstacle)
-          pairs.push_back({slave, master, radius});
       }
   }
 
@@ -489,21 +581,28 @@ namespace dyncontact
   GmshScene<dim>::refuse_unpaired_contact_tags() const
   {
     const unsigned int n = body_tags.size();
-    // contact tags that no pair uses: bodies that would pass through
-    // each other unnoticed
+    // contact tags that no pair uses: surfaces that would pass through
+    // others unnoticed
     for (unsigned int b = 0; b < n; ++b)
-      if (!contact_tags[b].empty())
+      for (const auto tag : contact_tags[b])
         {
-          bool paired = obstacle_slaves.count(b) > 0;
+          bool paired =
+            obstacle_slaves.count(b) > 0 && obstacle_tags.count(tag);
           for (const BodyPair &pair : pairs)
-            paired = paired || pair.slave == b || pair.master == b;
+            for (const auto &[body, tags] :
+                 {std::make_pair(pair.slave, &pair.slave_tags),
+                  std::make_pair(pair.master, &pair.master_tags)})
+              paired = paired || (body == b &&
+                                  std::find(tags->begin(), tags->end(), tag) !=
+                                    tags->end());
           AssertThrow(paired,
                       ExcMessage("Scene/Gmsh/Contact tags give body " +
                                  std::to_string(b + 1) +
-                                 " a contact boundary, but no pair of "
-                                 "Scene/Gmsh/Contact pairs names it: list its "
-                                 "pairs (slave : master), or leave its contact "
-                                 "tags out."));
+                                 " a contact boundary (tag " +
+                                 std::to_string(tag) +
+                                 "), but no pair of Scene/Gmsh/Contact pairs "
+                                 "names it: list its pairs (slave : master), "
+                                 "or leave its contact tags out."));
         }
   }
 

@@ -327,8 +327,8 @@ namespace dyncontact
     for (const BodyPair &body_pair : pairs)
       {
         ContactPair pair;
-        pair.first_side  = contact_tags[body_pair.slave];
-        pair.second_side = contact_tags[body_pair.master];
+        pair.first_side  = body_pair.slave_tags;
+        pair.second_side = body_pair.master_tags;
         // Body 1 tags and Body 2 tags: Contact/Slave side decides (auto:
         // the finer side); a list of pairs names the slave
         if (pairs_listed)
@@ -349,12 +349,7 @@ namespace dyncontact
   std::vector<types::boundary_id>
   GmshScene<dim>::contact_boundary_ids() const
   {
-    std::vector<types::boundary_id> ids;
-    for (const unsigned int body : obstacle_slaves)
-      ids.insert(ids.end(),
-                 contact_tags[body].begin(),
-                 contact_tags[body].end());
-    return ids;
+    return {obstacle_tags.begin(), obstacle_tags.end()};
   }
 
 

@@ -120,21 +120,26 @@ namespace dyncontact
     std::vector<Tensor<1, dim>>                  velocity;
     /// The entry that gave each body's contact tags, for messages.
     std::vector<std::string> contact_entries;
-    /// A pair of two bodies: slave and master, counted from 0, and its own
-    /// search radius (m; 0: Contact/Search radius).
+    /// A pair of two bodies: slave and master, counted from 0, its own
+    /// search radius (m; 0: Contact/Search radius), and the contact tags of
+    /// each side (all of the body's, or those the pair names).
     struct BodyPair
     {
-      unsigned int slave;
-      unsigned int master;
-      double       search_radius;
+      unsigned int                    slave;
+      unsigned int                    master;
+      double                          search_radius;
+      std::vector<types::boundary_id> slave_tags;
+      std::vector<types::boundary_id> master_tags;
     };
     std::vector<BodyPair> pairs;
     /// Whether the pairs were listed in Contact pairs (they then name the
     /// slave).
     bool pairs_listed = false;
-    /// The bodies paired with the rigid obstacle, and the obstacle.
-    std::set<unsigned int> obstacle_slaves;
-    RigidObstacle<dim>     rigid_obstacle;
+    /// The bodies paired with the rigid obstacle, their tags that meet it,
+    /// and the obstacle.
+    std::set<unsigned int>       obstacle_slaves;
+    std::set<types::boundary_id> obstacle_tags;
+    RigidObstacle<dim>           rigid_obstacle;
     /// The Dirichlet tags, each with the displacement components it fixes.
     std::map<unsigned int, std::array<bool, 3>> dirichlet_components;
     std::set<unsigned int>                      neumann_tags;
