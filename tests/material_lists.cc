@@ -22,26 +22,6 @@
 
 #include "tests.h"
 
-namespace
-{
-  std::string
-  error_of(const std::string &prm)
-  {
-    std::string message;
-    try
-      {
-        testing::run(prm);
-      }
-    catch (const std::exception &e)
-      {
-        std::istringstream words(e.what());
-        for (std::string word; words >> word;)
-          message += word + " ";
-      }
-    return message;
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {

@@ -18,25 +18,6 @@ namespace
       text += (text.empty() ? "" : " ") + c;
     return text;
   }
-
-  /// The message of the error @p prm stops with (deal.II wraps its
-  /// lines: every run of white space is one space here), or "".
-  std::string
-  error_of(const std::string &prm)
-  {
-    std::string message;
-    try
-      {
-        testing::run(prm);
-      }
-    catch (const std::exception &e)
-      {
-        std::istringstream words(e.what());
-        for (std::string word; words >> word;)
-          message += word + " ";
-      }
-    return message;
-  }
 } // namespace
 
 int

@@ -149,6 +149,31 @@ namespace testing
     return dyncontact::run_simulation(prm, MPI_COMM_WORLD, "test input");
   }
 
+  /// The message of the error the run of @p prm stops with (for deal.II's
+  /// exceptions the additional information alone, without the place in the
+  /// source; every run of white space is one space here), or "" if it
+  /// does not stop; in this process, on every rank.
+  inline std::string
+  error_of(const std::string &prm)
+  {
+    std::string message;
+    try
+      {
+        run(prm);
+      }
+    catch (const std::exception &e)
+      {
+        std::string       text = e.what();
+        const std::size_t info = text.find("Additional information:");
+        if (info != std::string::npos)
+          text = text.substr(info + 23, text.find("Stacktrace:") - info - 23);
+        std::istringstream words(text);
+        for (std::string word; words >> word;)
+          message += (message.empty() ? "" : " ") + word;
+      }
+    return message;
+  }
+
   /// First and last time with active contact rows (-1 if none).
   inline std::pair<double, double>
   contact_interval(const Statistics &s)

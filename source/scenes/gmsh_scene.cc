@@ -1,4 +1,5 @@
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
@@ -315,6 +316,7 @@ namespace dyncontact
                             contact_entries[b],
                             contact_tags[b],
                             mesh_file);
+    attach_manifolds(tria, face_tags);
   }
 
 
@@ -403,8 +405,26 @@ namespace dyncontact
   GmshScene<dim>::initial_velocity(const Point<dim>  &x,
                                    const unsigned int body) const
   {
-    (void)x;
-    return velocity[body];
+    if (velocity_functions.empty())
+      return velocity[body];
+    Tensor<1, dim> v;
+    for (unsigned int d = 0; d < dim; ++d)
+      v[d] = velocity_functions[body]->value(x, d);
+    return v;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  GmshScene<dim>::initial_displacement(const Point<dim>  &x,
+                                       const unsigned int body) const
+  {
+    Tensor<1, dim> u;
+    if (!displacement_functions.empty())
+      for (unsigned int d = 0; d < dim; ++d)
+        u[d] = displacement_functions[body]->value(x, d);
+    return u;
   }
 
 

@@ -5,10 +5,17 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace dealii
+{
+  template <int dim>
+  class FunctionParser;
+}
 
 namespace dyncontact
 {
@@ -77,6 +84,13 @@ namespace dyncontact
     Tensor<1, dim>
     body_force(const unsigned int body) const override;
 
+    /// Initial displacement function at @p x in @p body (zero without).
+    Tensor<1, dim>
+    initial_displacement(const Point<dim>  &x,
+                         const unsigned int body) const override;
+
+    /// The Initial velocity function at @p x in @p body, or the body's
+    /// constant initial velocity.
     Tensor<1, dim>
     initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
@@ -109,7 +123,24 @@ namespace dyncontact
     /// Stops if a body has contact tags but no pair names it.
     void
     refuse_unpaired_contact_tags() const;
+
+    /// Manifolds: boundary tags bound to a sphere or a cylinder.
+    void
+    parse_manifolds(ParameterHandler &prm);
+
+    /// Initial displacement, Initial velocity and Function constants: one
+    /// function parser per body (the constant 'body' is its number).
+    void
+    parse_initial_functions(ParameterHandler &prm);
     /// @}
+
+    /// Binds the faces of each tag of Manifolds (and their edges) to its
+    /// manifold, after checking that the tag is on the boundary (@p
+    /// face_tags) and that each face's vertices lie at one distance from
+    /// the centre or the axis.
+    void
+    attach_manifolds(Triangulation<dim, dim>      &tria,
+                     const std::set<unsigned int> &face_tags) const;
 
     std::string mesh_file;
     double      n_cells = 0.;
@@ -143,8 +174,22 @@ namespace dyncontact
     /// The Dirichlet tags, each with the displacement components it fixes.
     std::map<unsigned int, std::array<bool, 3>> dirichlet_components;
     std::set<unsigned int>                      neumann_tags;
-    Tensor<1, dim>                              traction;
-    Tensor<1, dim>                              gravity;
+    /// A boundary tag bound to a sphere (in 2D a circle) of centre @p
+    /// point, or to a cylinder (3D) of axis through @p point along @p axis.
+    struct ManifoldBinding
+    {
+      unsigned int   tag;
+      bool           cylinder;
+      Point<dim>     point;
+      Tensor<1, dim> axis;
+    };
+    std::vector<ManifoldBinding> manifolds;
+    /// Per body (empty: none): the initial displacement and velocity as
+    /// functions of x, y (, z).
+    std::vector<std::shared_ptr<FunctionParser<dim>>> displacement_functions;
+    std::vector<std::shared_ptr<FunctionParser<dim>>> velocity_functions;
+    Tensor<1, dim>                                    traction;
+    Tensor<1, dim>                                    gravity;
   };
 } // namespace dyncontact
 

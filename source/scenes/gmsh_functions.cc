@@ -1,0 +1,119 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <dyncontact/base/collective_errors.h>
+#include <dyncontact/scenes/gmsh_scene.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+
+// GmshScene's initial displacement and velocity as functions of x.
+
+namespace dyncontact
+{
+  namespace
+  {
+    /// Function constants: 'name = value', comma-separated.
+    std::map<std::string, double>
+    parse_constants(const std::string &text)
+    {
+      std::map<std::string, double> constants;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          const std::size_t equal = item.find('=');
+          char             *end   = nullptr;
+          const std::string name =
+            Utilities::trim(item.substr(0, std::min(equal, item.size())));
+          const std::string value  = equal == std::string::npos ?
+                                       "" :
+                                       Utilities::trim(item.substr(equal + 1));
+          const double      number = std::strtod(value.c_str(), &end);
+          AssertThrow(!name.empty() && !value.empty() && *end == '\0' &&
+                        std::isfinite(number) && name != "body" &&
+                        name.find_first_of(" ;") == std::string::npos,
+                      ExcMessage("Scene/Gmsh/Function constants: '" + item +
+                                 "' is no 'name = value' with a finite value "
+                                 "(the name 'body' is the body's number, "
+                                 "not a constant)."));
+          constants[name] = number;
+        }
+      return constants;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  GmshScene<dim>::parse_initial_functions(ParameterHandler &prm)
+  {
+    const auto constants = parse_constants(prm.get("Function constants"));
+    displacement_functions.clear();
+    velocity_functions.clear();
+    for (const auto &[entry, functions] :
+         {std::make_pair(std::string("Initial displacement"),
+                         &displacement_functions),
+          std::make_pair(std::string("Initial velocity"), &velocity_functions)})
+      {
+        const std::string text = prm.get(entry);
+        if (text.empty())
+          continue;
+        const auto expressions = Utilities::split_string_list(text, ';');
+        AssertThrow(expressions.size() == dim,
+                    ExcMessage("Scene/Gmsh/" + entry + " = '" + text +
+                               "' has " + std::to_string(expressions.size()) +
+                               " components separated by ';'; a " +
+                               std::to_string(dim) + "D mesh needs " +
+                               std::to_string(dim) + "."));
+        for (unsigned int b = 0; b < body_tags.size(); ++b)
+          {
+            auto with_body       = constants;
+            with_body["body"]    = b + 1;
+            auto        function = std::make_shared<FunctionParser<dim>>(dim);
+            std::string problem;
+            try
+              {
+                function->initialize(
+                  FunctionParser<dim>::default_variable_names(),
+                  expressions,
+                  with_body);
+                // (muparser reads the expressions at the first evaluation)
+                for (unsigned int d = 0; d < dim; ++d)
+                  (void)function->value(Point<dim>(), d);
+              }
+            catch (const std::exception &e)
+              {
+                problem = message_of(e);
+              }
+            AssertThrow(problem.empty(),
+                        ExcMessage("Scene/Gmsh/" + entry + " = '" + text +
+                                   "' cannot be read (variables x, y" +
+                                   (dim == 3 ? ", z" : "") +
+                                   ", the constant 'body' and those of "
+                                   "Function constants): " +
+                                   problem));
+            functions->push_back(function);
+          }
+      }
+    if (!velocity_functions.empty())
+      for (const std::string entry : {"Initial velocities",
+                                      "Initial velocity of body 1",
+                                      "Initial velocity of body 2"})
+        AssertThrow(prm.get(entry).empty() || prm.get(entry) == "0, 0, 0",
+                    ExcMessage("Scene/Gmsh/Initial velocity (a function) "
+                               "replaces Scene/Gmsh/" +
+                               entry + ": leave that out."));
+  }
+
+
+
+  // (the class is instantiated where it is registered, in gmsh_scene.cc)
+  template void
+  GmshScene<2>::parse_initial_functions(ParameterHandler &);
+  template void
+  GmshScene<3>::parse_initial_functions(ParameterHandler &);
+} // namespace dyncontact
