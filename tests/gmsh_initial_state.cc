@@ -10,10 +10,13 @@
 //   rho omega^2 sum_i w_i r_i^2 / 2 (w_i the trapezoidal weights of the
 //   nodes: the lumped mass), both exactly;
 // - the constant 'body': 'if(body == 2, -1, 0)' moves only body 2;
-// - bad input named: an expression that does not parse (with its
-//   position), an unknown variable, two components in 3D... (here: three
-//   in 2D), a constant named 'body', and a velocity function beside the
-//   constant Initial velocities.
+// - bad input named: an expression that does not parse (naming the
+//   component), an unknown variable, three components in 2D, a constant
+//   named 'body' or 'x', a velocity function beside the constant Initial
+//   velocities, a value that is not finite, and a displacement that pushes
+//   body 1 into the rigid floor; one that the Dirichlet tags reset to zero
+//   is warned of (a constant velocity of a body with a clamped end is a
+//   problem of its own, tests/viscous_decay).
 
 #include <cmath>
 
@@ -25,7 +28,7 @@ main(int argc, char **argv)
   dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
   write_block_msh("blocks.msh",
-                  {{0, 1, 0, 0.5, 8, 4, 1, 0, 0},
+                  {{0, 1, 0, 0.5, 8, 4, 1, 10, 0},
                    {0, 1, 1, 1.5, 8, 4, 2, 0, 0}});
   const auto prm = [](const std::string &dir, const std::string &entries) {
     return "set Dimension = 2\nset Output directory = " + dir + "\n" +
@@ -109,7 +112,30 @@ main(int argc, char **argv)
      "Function constants: 'body = 2'"},
     {"    set Initial velocity = 0; -1\n"
      "    set Initial velocities = 0, 0; 0, -1\n",
-     "replaces Scene/Gmsh/Initial velocities"}};
+     "replaces Scene/Gmsh/Initial velocities"},
+    {"    set Initial velocity = 0; x\n"
+     "    set Function constants = x = 1\n",
+     "names a constant 'x', which is a variable"},
+    {"    set Initial velocity = 1/(x - x); 0\n",
+     "Initial velocity is not finite at the node"},
+    {"    set Initial displacement = 0; if(body == 1, -0.01, 0)\n"
+     "    set Contact tags = 10;\n    set Contact pairs = 1 : obstacle\n"
+     "    set Obstacle point = 0, 0\n    set Obstacle normal = 0, 1\n",
+     "The initial displacement makes the bodies penetrate"}};
+  // a displacement that the clamp of the bottom (tag 10) resets: a warning
+  std::ofstream("clamped.prm") << prm("results-clamped",
+                                      "    set Initial displacement = 0.01; 0\n"
+                                      "    set Dirichlet tags = 10\n");
+  const Outcome clamped = run_program("clamped.prm");
+  log() << "a displacement of 0.01 m at the clamped bottom: the run warns "
+           "that those nodes start at zero: "
+        << check(clamped.status == 0 &&
+                 clamped.text.find(
+                   "warning: the initial displacement is up to 0.01 m at "
+                   "nodes that Dirichlet boundaries hold at zero") !=
+                   std::string::npos)
+        << "\n";
+
   for (const auto &[entries, fragment] : cases)
     {
       const std::string message = error_of(prm("results-bad", entries));

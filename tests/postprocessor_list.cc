@@ -88,6 +88,11 @@ main(int argc, char **argv)
             << "\n";
     }
 
+  const std::string with_all = error_of(prm("all, energy"));
+  log() << "'all' beside a name is refused: "
+        << check(with_all.find("'all' stands alone") != std::string::npos)
+        << "\n";
+
   const std::string twice = error_of(prm("energy, contact, energy"));
   log() << "a name listed twice is refused, naming it: "
         << check(twice.find("List of postprocessors") != std::string::npos &&

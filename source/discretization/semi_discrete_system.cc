@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/base/triangulation.h>
 #include <dyncontact/discretization/rigid_motions.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -410,7 +411,7 @@ namespace dyncontact
 
 
   template <int dim>
-  void
+  std::array<double, 2>
   SemiDiscreteSystem<dim>::interpolate_initial_values(const Scene<dim> &scene,
                                                       VectorType       &u,
                                                       VectorType &udot) const
@@ -421,34 +422,61 @@ namespace dyncontact
     // (bodies share no nodes)
     const auto &unit_points = scalar_fe.get_unit_support_points();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int node = 0; node < unit_points.size(); ++node)
+    // (a scene's function may stop on one rank: every rank stops)
+    std::string problem;
+    try
+      {
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
             {
-              const Point<dim> x =
-                mapping.transform_unit_to_real_cell(cell, unit_points[node]);
-              const Tensor<1, dim> u0 =
-                scene.initial_displacement(x, cell->material_id());
-              const Tensor<1, dim> v0 =
-                scene.initial_velocity(x, cell->material_id());
-              for (unsigned int d = 0; d < dim; ++d)
+              cell->get_dof_indices(dofs);
+              for (unsigned int node = 0; node < unit_points.size(); ++node)
                 {
-                  const auto dof = dofs[node_system_indices[node][d]];
-                  if (locally_owned.is_element(dof))
+                  const Point<dim> x =
+                    mapping.transform_unit_to_real_cell(cell,
+                                                        unit_points[node]);
+                  const Tensor<1, dim> u0 =
+                    scene.initial_displacement(x, cell->material_id());
+                  const Tensor<1, dim> v0 =
+                    scene.initial_velocity(x, cell->material_id());
+                  for (unsigned int d = 0; d < dim; ++d)
                     {
-                      u(dof)    = u0[d];
-                      udot(dof) = v0[d];
+                      const auto dof = dofs[node_system_indices[node][d]];
+                      if (locally_owned.is_element(dof))
+                        {
+                          u(dof)    = u0[d];
+                          udot(dof) = v0[d];
+                        }
                     }
                 }
             }
-        }
+      }
+    catch (const std::exception &e)
+      {
+        problem = message_of(e);
+      }
+    stop_with_any_message(problem, comm);
     u.compress(VectorOperation::insert);
     udot.compress(VectorOperation::insert);
+    // values where Dirichlet boundaries hold the displacement at zero (a
+    // constraint without entries), which they reset
+    double fixed_u = 0., fixed_v = 0.;
+    for (const auto dof : locally_owned)
+      if (constraints.is_constrained(dof) &&
+          constraints.get_constraint_entries(dof)->empty())
+        {
+          fixed_u = std::max(fixed_u, std::abs(u(dof)));
+          fixed_v = std::max(fixed_v, std::abs(udot(dof)));
+        }
+    fixed_u                           = Utilities::MPI::max(fixed_u, comm);
+    fixed_v                           = Utilities::MPI::max(fixed_v, comm);
+    const std::array<double, 2> reset = {
+      {fixed_u > 1e-9 * u.linfty_norm() ? fixed_u : 0.,
+       fixed_v > 1e-9 * udot.linfty_norm() ? fixed_v : 0.}};
     // hanging nodes follow their parents, Dirichlet nodes are fixed
     constraints.distribute(u);
     constraints.distribute(udot);
+    return reset;
   }
 
 

@@ -67,14 +67,21 @@ namespace dyncontact
     Manager<dim>::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Postprocess");
-      const auto chosen =
-        Utilities::split_string_list(prm.get("List of postprocessors"));
+      const std::string list   = prm.get("List of postprocessors");
+      const auto        chosen = Utilities::split_string_list(list);
       prm.leave_subsection();
       postprocessors.clear();
       listed.clear();
       // in the order of the list (ASPECT's way), all of them in the order of
       // their names
-      if (std::find(chosen.begin(), chosen.end(), "all") != chosen.end())
+      AssertThrow(chosen.size() == 1 ||
+                    std::find(chosen.begin(), chosen.end(), "all") ==
+                      chosen.end(),
+                  ExcMessage("Postprocess/List of postprocessors: 'all' "
+                             "stands alone (it names every statistic that "
+                             "applies); got '" +
+                             list + "'."));
+      if (chosen.size() == 1 && chosen[0] == "all")
         for (const auto &info : PluginRegistry<Interface>::plugins())
           {
             postprocessors.push_back(info.template create<dim>());

@@ -215,10 +215,10 @@ namespace dyncontact
 
 
   template <int dim>
-  void
+  std::array<double, 2>
   DiscreteProblem<dim>::interpolate_initial_values(const Scene<dim> &scene)
   {
-    system->interpolate_initial_values(scene, u, udot);
+    return system->interpolate_initial_values(scene, u, udot);
   }
 
 
@@ -229,7 +229,16 @@ namespace dyncontact
                               const double      tau,
                               TimerOutput      &timer)
   {
-    interpolate_initial_values(scene);
+    const auto reset = interpolate_initial_values(scene);
+    for (unsigned int k = 0; k < 2; ++k)
+      if (reset[k] > 0.)
+        pcout << "   warning: the initial "
+              << (k == 0 ? "displacement" : "velocity") << " is up to "
+              << reset[k] << (k == 0 ? " m" : " m/s")
+              << " at nodes that Dirichlet boundaries hold at zero: those "
+                 "nodes start at zero (and the initial energy lacks their "
+                 "share)."
+              << std::endl;
     make_integrator(tau, timer);
     project_initial_penetration();
     contact->refuse_initial_overlap(u);
@@ -316,6 +325,15 @@ namespace dyncontact
     for (const double v : contact->get_row_operator().constraint_values(u))
       largest = std::max(largest, v);
     largest = Utilities::MPI::max(largest, comm);
+    // (the reference configuration was checked when the rows were set up:
+    // here the initial displacement makes it penetrate)
+    AssertThrow(largest <= 1e-12 || contact->projects_initial_penetration(),
+                ExcMessage("The initial displacement makes the bodies "
+                           "penetrate (a slave node inside the obstacle or "
+                           "its master body) by up to " +
+                           Utilities::to_string(largest) +
+                           " m. Correct it, or set 'Contact/Initial "
+                           "penetration = project'."));
     if (largest > 1e-12)
       {
         integrator->project_onto_constraints(u);

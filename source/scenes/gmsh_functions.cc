@@ -5,6 +5,8 @@
 #include <dyncontact/base/collective_errors.h>
 #include <dyncontact/scenes/gmsh_scene.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <string>
@@ -32,13 +34,28 @@ namespace dyncontact
                                        "" :
                                        Utilities::trim(item.substr(equal + 1));
           const double      number = std::strtod(value.c_str(), &end);
-          AssertThrow(!name.empty() && !value.empty() && *end == '\0' &&
-                        std::isfinite(number) && name != "body" &&
-                        name.find_first_of(" ;") == std::string::npos,
+          const bool        identifier =
+            !name.empty() && (std::isalpha(name[0]) || name[0] == '_') &&
+            std::all_of(name.begin(), name.end(), [](const char c) {
+              return std::isalnum(c) || c == '_';
+            });
+          AssertThrow(identifier && !value.empty() && *end == '\0' &&
+                        std::isfinite(number) &&
+                        value.find_first_of("xX") == std::string::npos,
                       ExcMessage("Scene/Gmsh/Function constants: '" + item +
-                                 "' is no 'name = value' with a finite value "
-                                 "(the name 'body' is the body's number, "
-                                 "not a constant)."));
+                                 "' is no 'name = value' with a name of "
+                                 "letters, digits and '_' and a finite "
+                                 "decimal value."));
+          for (const std::string reserved : {"x", "y", "z", "t", "body"})
+            AssertThrow(name != reserved,
+                        ExcMessage("Scene/Gmsh/Function constants: '" + item +
+                                   "' names a constant '" + name +
+                                   "', which is a variable of the functions "
+                                   "(x, y, z, t) or the body's number "
+                                   "('body')."));
+          AssertThrow(constants.count(name) == 0,
+                      ExcMessage("Scene/Gmsh/Function constants gives '" +
+                                 name + "' twice."));
           constants[name] = number;
         }
       return constants;
@@ -71,23 +88,44 @@ namespace dyncontact
                                std::to_string(dim) + "."));
         for (unsigned int b = 0; b < body_tags.size(); ++b)
           {
-            auto with_body       = constants;
-            with_body["body"]    = b + 1;
-            auto        function = std::make_shared<FunctionParser<dim>>(dim);
-            std::string problem;
-            try
+            auto with_body    = constants;
+            with_body["body"] = b + 1;
+            auto function     = std::make_shared<FunctionParser<dim>>(dim);
+            // (muparser reads the expressions at the first evaluation and
+            // throws its own type)
+            const auto problem_of = [&](FunctionParser<dim>            &parser,
+                                        const std::vector<std::string> &e) {
+              try
+                {
+                  parser.initialize(
+                    FunctionParser<dim>::default_variable_names(),
+                    e,
+                    with_body);
+                  for (unsigned int d = 0; d < e.size(); ++d)
+                    (void)parser.value(Point<dim>(), d);
+                }
+              catch (const std::exception &error)
+                {
+                  return message_of(error);
+                }
+              catch (...)
+                {
+                  return std::string("the parser refused it");
+                }
+              return std::string();
+            };
+            std::string problem = problem_of(*function, expressions);
+            // name the component that fails
+            for (unsigned int d = 0; !problem.empty() && d < dim; ++d)
               {
-                function->initialize(
-                  FunctionParser<dim>::default_variable_names(),
-                  expressions,
-                  with_body);
-                // (muparser reads the expressions at the first evaluation)
-                for (unsigned int d = 0; d < dim; ++d)
-                  (void)function->value(Point<dim>(), d);
-              }
-            catch (const std::exception &e)
-              {
-                problem = message_of(e);
+                FunctionParser<dim> one(1);
+                const std::string   own = problem_of(one, {expressions[d]});
+                if (!own.empty())
+                  {
+                    problem = "component " + std::to_string(d + 1) + " ('" +
+                              expressions[d] + "'): " + own;
+                    break;
+                  }
               }
             AssertThrow(problem.empty(),
                         ExcMessage("Scene/Gmsh/" + entry + " = '" + text +

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -105,28 +106,32 @@ namespace dyncontact
             d -= (d * axis) * axis;
           return d.norm();
         };
-        // (the manifold id is the tag)
+        // (the manifold id is the tag; the coarse mesh is on every rank)
+        double smallest = std::numeric_limits<double>::max(), largest = 0.;
         for (const auto &cell : tria.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary() &&
                 cell->face(f)->boundary_id() == binding.tag)
               {
-                const auto   face = cell->face(f);
-                const double r0   = distance(face->vertex(0));
-                for (const unsigned int v : face->vertex_indices())
-                  AssertThrow(
-                    std::abs(distance(face->vertex(v)) - r0) <=
-                      1e-3 * std::max(r0, 1e-300),
-                    ExcMessage(
-                      "Scene/Gmsh/Manifolds: a face of tag " +
-                      std::to_string(binding.tag) + " in '" + mesh_file +
-                      "' has vertices at distances " + format_number(r0) +
-                      " and " + format_number(distance(face->vertex(v))) +
-                      " m from the " + (binding.cylinder ? "axis" : "centre") +
-                      " (they must agree to 1e-3): the tag is not on this " +
-                      (binding.cylinder ? "cylinder" : "sphere") + "."));
-                face->set_all_manifold_ids(binding.tag);
+                for (const unsigned int v : cell->face(f)->vertex_indices())
+                  {
+                    const double r = distance(cell->face(f)->vertex(v));
+                    smallest       = std::min(smallest, r);
+                    largest        = std::max(largest, r);
+                  }
+                cell->face(f)->set_all_manifold_ids(binding.tag);
               }
+        AssertThrow(largest - smallest <= 1e-3 * largest && largest > 0.,
+                    ExcMessage(
+                      "Scene/Gmsh/Manifolds: the vertices of tag " +
+                      std::to_string(binding.tag) + " in '" + mesh_file +
+                      "' lie between " + format_number(smallest) + " and " +
+                      format_number(largest) + " m from the " +
+                      (binding.cylinder ? "axis" : "centre") +
+                      " (they must agree to 1e-3): the tag is not on this " +
+                      (binding.cylinder ? "cylinder" : "sphere") +
+                      ". (Surfaces of other radii need tags of their "
+                      "own.)"));
         if (binding.cylinder)
           {
             if constexpr (dim == 3)

@@ -185,7 +185,7 @@ namespace dyncontact
       "surface, items separated by ';': 'tag: sphere x, y[, z]' (the "
       "centre, m) or 'tag: cylinder x, y, z axis a, b, c' (a point on the "
       "axis, m, and its direction), e.g. '20: sphere 0, 0.5; 21: sphere 0, "
-      "0.5'. The vertices of each face of the tag must lie at one distance "
+      "0.5'. All vertices of the tag must lie at one distance "
       "from the centre or the axis.");
     prm.declare_entry("Gravity",
                       "0, 0, 0",
@@ -212,6 +212,10 @@ namespace dyncontact
       unread.emplace_back("Scene/Gmsh/Initial velocity of body 2",
                           "the mesh has one body (Scene/Gmsh/Body 2 tags is "
                           "empty)");
+    if (displacement_functions.empty() && velocity_functions.empty())
+      unread.emplace_back("Scene/Gmsh/Function constants",
+                          "neither Scene/Gmsh/Initial displacement nor "
+                          "Initial velocity is given");
     return unread;
   }
 

@@ -400,6 +400,33 @@ namespace dyncontact
 
 
 
+  namespace
+  {
+    /// Stops with a message naming Scene/Gmsh/@p entry unless @p value is
+    /// finite.
+    template <int dim>
+    void
+    refuse_non_finite(const Tensor<1, dim> &value,
+                      const std::string    &entry,
+                      const Point<dim>     &x)
+    {
+      bool finite = true;
+      for (unsigned int d = 0; d < dim; ++d)
+        finite = finite && std::isfinite(value[d]);
+      if (finite)
+        return;
+      std::ostringstream where;
+      for (unsigned int d = 0; d < dim; ++d)
+        where << (d > 0 ? ", " : "") << x[d];
+      AssertThrow(false,
+                  ExcMessage("Scene/Gmsh/" + entry +
+                             " is not finite at the node (" + where.str() +
+                             ")."));
+    }
+  } // namespace
+
+
+
   template <int dim>
   Tensor<1, dim>
   GmshScene<dim>::initial_velocity(const Point<dim>  &x,
@@ -410,6 +437,7 @@ namespace dyncontact
     Tensor<1, dim> v;
     for (unsigned int d = 0; d < dim; ++d)
       v[d] = velocity_functions[body]->value(x, d);
+    refuse_non_finite(v, "Initial velocity", x);
     return v;
   }
 
@@ -424,6 +452,7 @@ namespace dyncontact
     if (!displacement_functions.empty())
       for (unsigned int d = 0; d < dim; ++d)
         u[d] = displacement_functions[body]->value(x, d);
+    refuse_non_finite(u, "Initial displacement", x);
     return u;
   }
 

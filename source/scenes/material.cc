@@ -105,16 +105,15 @@ namespace dyncontact
       {
         const auto items = Utilities::split_string_list(text);
         return !items.empty() &&
-               std::all_of(items.begin(),
-                           items.end(),
-                           [this](const std::string &item) {
-                             char        *end = nullptr;
-                             const double value =
-                               std::strtod(item.c_str(), &end);
-                             return !item.empty() && *end == '\0' &&
-                                    std::isfinite(value) && value >= lower &&
-                                    value <= upper;
-                           });
+               std::all_of(
+                 items.begin(), items.end(), [this](const std::string &item) {
+                   char        *end   = nullptr;
+                   const double value = std::strtod(item.c_str(), &end);
+                   return !item.empty() && *end == '\0' &&
+                          item.find_first_of("xX") == std::string::npos &&
+                          std::isfinite(value) && value >= lower &&
+                          value <= upper;
+                 });
       }
 
       std::string

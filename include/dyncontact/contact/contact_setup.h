@@ -233,6 +233,13 @@ namespace dyncontact
     void
     refuse_initial_overlap(const VectorType &u) const;
 
+    /// Whether 'Contact/Initial penetration = project' (else: reject).
+    bool
+    projects_initial_penetration() const
+    {
+      return parameters.project_initial_penetration;
+    }
+
   private:
     /// Of the rows of one slave node in several pairs, keeps the one with
     /// the least gap (the nearer master).

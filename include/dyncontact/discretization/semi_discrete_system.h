@@ -174,8 +174,10 @@ namespace dyncontact
 
     /// The scene's initial displacement and velocity, nodal interpolation
     /// body by body; hanging nodes follow their parents, Dirichlet nodes are
-    /// fixed.
-    void
+    /// fixed. Returns the largest values of u and udot that the Dirichlet
+    /// constraints set to zero (0 where they are round-off of the largest
+    /// value).
+    std::array<double, 2>
     interpolate_initial_values(const Scene<dim> &scene,
                                VectorType       &u,
                                VectorType       &udot) const;

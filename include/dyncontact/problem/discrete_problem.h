@@ -10,6 +10,7 @@
 #include <dyncontact/time_stepping/integrators.h>
 #include <dyncontact/time_stepping/simulation_control.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -98,8 +99,10 @@ namespace dyncontact
                     TimerOutput &timer,
                     const bool   adapting = false);
 
-    /// (u, udot) of the scene's initial values (on the present mesh).
-    void
+    /// (u, udot) of the scene's initial values (on the present mesh); the
+    /// largest values the Dirichlet constraints reset to zero (see
+    /// SemiDiscreteSystem::interpolate_initial_values()).
+    std::array<double, 2>
     interpolate_initial_values(const Scene<dim> &scene);
 
     /// The initial state of a new run: the scene's initial values, the

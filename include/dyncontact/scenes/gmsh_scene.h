@@ -136,8 +136,8 @@ namespace dyncontact
 
     /// Binds the faces of each tag of Manifolds (and their edges) to its
     /// manifold, after checking that the tag is on the boundary (@p
-    /// face_tags) and that each face's vertices lie at one distance from
-    /// the centre or the axis.
+    /// face_tags) and that all its vertices lie at one distance from the
+    /// centre or the axis.
     void
     attach_manifolds(Triangulation<dim, dim>      &tria,
                      const std::set<unsigned int> &face_tags) const;
