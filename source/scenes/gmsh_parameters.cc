@@ -72,6 +72,13 @@ namespace dyncontact
                       "The traction on the Neumann boundaries, "
                       "components in Pa, each in [-1e15, 1e15] (in 2D a third "
                       "component must be 0).");
+    prm.declare_entry("Neumann tractions",
+                      "",
+                      Patterns::Anything(),
+                      "A traction of its own per boundary tag, items "
+                      "separated by ';': 'tag: components in Pa', e.g. "
+                      "'13: 0, -2; 14: 1, 0' (each component in [-1e15, "
+                      "1e15]); a tag here must not be in Neumann tags.");
     prm.declare_entry("Contact tags of body 1",
                       "",
                       Patterns::Anything(),
@@ -235,6 +242,34 @@ namespace dyncontact
                                  1e15,
                                  "Pa");
     gravity = parse_vector<dim>(prm.get("Gravity"), "Gravity", 1e15, "m/s^2");
+    tag_tractions.clear();
+    for (const std::string &item :
+         split_items(prm.get("Neumann tractions"), ';'))
+      {
+        if (item.empty())
+          continue;
+        const std::size_t colon = item.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage("Scene/Gmsh/Neumann tractions: '" + item +
+                               "' is no 'tag: components'."));
+        const auto tags = parse_tags(Utilities::trim(item.substr(0, colon)),
+                                     "Neumann tractions ('" + item + "')");
+        AssertThrow(tags.size() == 1,
+                    ExcMessage("Scene/Gmsh/Neumann tractions: '" + item +
+                               "' is no 'tag: components'."));
+        const unsigned int tag = *tags.begin();
+        AssertThrow(neumann_tags.count(tag) == 0 &&
+                      tag_tractions.count(tag) == 0,
+                    ExcMessage("Scene/Gmsh/Neumann tractions: tag " +
+                               std::to_string(tag) +
+                               " has a traction already (listed twice, or "
+                               "in Neumann tags)."));
+        tag_tractions[tag] =
+          parse_vector<dim>(item.substr(colon + 1),
+                            "Neumann tractions ('" + item + "')",
+                            1e15,
+                            "Pa");
+      }
     parse_manifolds(prm);
     const std::string bodies = prm.get("Bodies");
     body_tags.clear();

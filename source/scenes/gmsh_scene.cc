@@ -311,6 +311,13 @@ namespace dyncontact
                           dirichlet_tags,
                           mesh_file);
     require_boundary_tags(face_tags, "Neumann tags", neumann_tags, mesh_file);
+    std::set<unsigned int> traction_tags;
+    for (const auto &[tag, value] : tag_tractions)
+      traction_tags.insert(tag);
+    require_boundary_tags(face_tags,
+                          "Neumann tractions",
+                          traction_tags,
+                          mesh_file);
     for (unsigned int b = 0; b < contact_tags.size(); ++b)
       require_boundary_tags(face_tags,
                             contact_entries[b],
@@ -386,6 +393,8 @@ namespace dyncontact
     std::vector<std::pair<types::boundary_id, Tensor<1, dim>>> tractions;
     for (const auto tag : neumann_tags)
       tractions.emplace_back(tag, traction);
+    for (const auto &[tag, value] : tag_tractions)
+      tractions.emplace_back(tag, value);
     return tractions;
   }
 

@@ -174,6 +174,8 @@ namespace dyncontact
     /// The Dirichlet tags, each with the displacement components it fixes.
     std::map<unsigned int, std::array<bool, 3>> dirichlet_components;
     std::set<unsigned int>                      neumann_tags;
+    /// Tags with a traction of their own (Neumann tractions).
+    std::map<unsigned int, Tensor<1, dim>> tag_tractions;
     /// A boundary tag bound to a sphere (in 2D a circle) of centre @p
     /// point, or to a cylinder (3D) of axis through @p point along @p axis.
     struct ManifoldBinding
