@@ -80,21 +80,24 @@ one_step(const std::string                      &scheme,
   };
   system.f = &f;
   ContactRows rows;
-  rows.rows                  = {row};
-  const auto     constraints = no_constraints(n);
-  TimeIntegrator integrator(scheme_by_name(scheme),
+  rows.rows                                        = {row};
+  const auto                           constraints = no_constraints(n);
+  const ActiveSetSolver::Parameters    solver_parameters;
+  const ActiveSetSolver::NearNullSpace near_null_space;
+  const IndexSet                       dofs = all(n);
+  TimeIntegrator                       integrator(scheme_by_name(scheme),
                             theta,
                             tau,
-                            system,
-                            ActiveSetSolver::Parameters(),
-                            all(n),
-                            all(n),
-                            constraints,
-                            rows,
-                            {},
-                            MPI_COMM_WORLD);
-  VectorType     u = make_vector(u0), udot = make_vector(v0);
-  Outcome        outcome;
+                            {system,
+                                                   solver_parameters,
+                                                   dofs,
+                                                   dofs,
+                                                   constraints,
+                                                   rows,
+                                                   near_null_space,
+                                                   MPI_COMM_WORLD});
+  VectorType u = make_vector(u0), udot = make_vector(v0);
+  Outcome    outcome;
   outcome.report = initialize ? integrator.initialize(tau, u, udot) :
                                 integrator.step(tau, true, u, udot);
   for (unsigned int i = 0; i < n; ++i)

@@ -181,18 +181,18 @@ namespace dyncontact
                                             const VectorType &S_diagonal) {
         return multigrid->make_preconditioner(a, b, S_vmult, S_diagonal);
       };
-    integrator =
-      std::make_unique<TimeIntegrator>(scheme,
-                                       parameters.numerical_dissipation,
-                                       tau,
-                                       matrices,
-                                       solver_parameters,
-                                       system->locally_owned_dofs(),
-                                       system->locally_relevant_dofs(),
-                                       system->get_constraints(),
-                                       contact->get_rows(),
-                                       near_null_space,
-                                       comm);
+    integrator = std::make_unique<TimeIntegrator>(
+      scheme,
+      parameters.numerical_dissipation,
+      tau,
+      StepOperatorInputs{matrices,
+                         solver_parameters,
+                         system->locally_owned_dofs(),
+                         system->locally_relevant_dofs(),
+                         system->get_constraints(),
+                         contact->get_rows(),
+                         near_null_space,
+                         comm});
     // ML's temporaries (AMG is made only on an assembled matrix)
     if (matrices_assembled())
       release_freed_memory();

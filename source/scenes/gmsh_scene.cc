@@ -261,9 +261,23 @@ namespace dyncontact
       return face_tags;
     }
 
+    /// A tag itself, or the key of a (tag, data) pair of a map.
+    inline unsigned int
+    tag_of(const unsigned int tag)
+    {
+      return tag;
+    }
+    template <typename Data>
+    unsigned int
+    tag_of(const std::pair<const unsigned int, Data> &item)
+    {
+      return item.first;
+    }
+
     /**
      * Checks that @p face_tags (the tags of the boundary faces) has every
-     * tag in @p tags, the value of the parameter Scene/Gmsh/@p entry.
+     * tag in @p tags (tags, or a map from tags), the value of the parameter
+     * Scene/Gmsh/@p entry.
      */
     template <typename Tags>
     void
@@ -272,12 +286,15 @@ namespace dyncontact
                           const Tags                   &tags,
                           const std::string            &mesh_file)
     {
-      for (const auto tag : tags)
-        AssertThrow(face_tags.count(tag),
-                    ExcMessage("Scene/Gmsh/" + entry + ": the mesh file '" +
-                               mesh_file +
-                               "' has no boundary faces with physical tag " +
-                               std::to_string(tag) + "."));
+      for (const auto &item : tags)
+        {
+          const unsigned int tag = tag_of(item);
+          AssertThrow(face_tags.count(tag),
+                      ExcMessage("Scene/Gmsh/" + entry + ": the mesh file '" +
+                                 mesh_file +
+                                 "' has no boundary faces with physical tag " +
+                                 std::to_string(tag) + "."));
+        }
     }
   } // namespace
 
@@ -303,20 +320,14 @@ namespace dyncontact
                                       mesh_file);
     const auto face_tags =
       boundary_tags(tria, contact_tags, contact_entries, mesh_file);
-    std::set<unsigned int> dirichlet_tags;
-    for (const auto &[tag, components] : dirichlet_components)
-      dirichlet_tags.insert(tag);
     require_boundary_tags(face_tags,
                           "Dirichlet tags",
-                          dirichlet_tags,
+                          dirichlet_components,
                           mesh_file);
     require_boundary_tags(face_tags, "Neumann tags", neumann_tags, mesh_file);
-    std::set<unsigned int> traction_tags;
-    for (const auto &[tag, value] : tag_tractions)
-      traction_tags.insert(tag);
     require_boundary_tags(face_tags,
                           "Neumann tractions",
-                          traction_tags,
+                          tag_tractions,
                           mesh_file);
     for (unsigned int b = 0; b < contact_tags.size(); ++b)
       require_boundary_tags(face_tags,

@@ -204,31 +204,13 @@ namespace dyncontact
 
 
 
-  TimeIntegrator::TimeIntegrator(
-    const Scheme                         &scheme,
-    const double                          numerical_dissipation,
-    const double                          tau,
-    const SystemMatrices                 &system,
-    const ActiveSetSolver::Parameters    &solver_parameters,
-    const IndexSet                       &locally_owned,
-    const IndexSet                       &locally_relevant,
-    const AffineConstraints<double>      &mesh_constraints,
-    const ContactRows                    &rows,
-    const ActiveSetSolver::NearNullSpace &near_null_space,
-    const MPI_Comm                        comm)
+  TimeIntegrator::TimeIntegrator(const Scheme &scheme,
+                                 const double  numerical_dissipation,
+                                 const double  tau,
+                                 const StepOperatorInputs &inputs)
     : scheme(scheme)
-    , operators(scheme.is_static,
-                numerical_dissipation,
-                tau,
-                system,
-                solver_parameters,
-                locally_owned,
-                locally_relevant,
-                mesh_constraints,
-                rows,
-                near_null_space,
-                comm)
-    , comm(comm)
+    , operators(scheme.is_static, numerical_dissipation, tau, inputs)
+    , comm(inputs.comm)
   {}
 
 

@@ -16,40 +16,32 @@
 
 namespace dyncontact
 {
-  StepOperators::StepOperators(
-    const bool                            is_static,
-    const double                          numerical_dissipation,
-    const double                          tau,
-    const SystemMatrices                 &system,
-    const ActiveSetSolver::Parameters    &solver_parameters,
-    const IndexSet                       &locally_owned,
-    const IndexSet                       &locally_relevant,
-    const AffineConstraints<double>      &mesh_constraints,
-    const ContactRows                    &rows,
-    const ActiveSetSolver::NearNullSpace &near_null_space,
-    const MPI_Comm                        comm)
-    : displacement_active(rows.size(), 0)
-    , projection_active(rows.size(), 0)
+  StepOperators::StepOperators(const bool                is_static,
+                               const double              numerical_dissipation,
+                               const double              tau,
+                               const StepOperatorInputs &inputs)
+    : displacement_active(inputs.rows.size(), 0)
+    , projection_active(inputs.rows.size(), 0)
     , is_static(is_static)
     , theta(is_static ? 0. : numerical_dissipation)
-    , system(system)
-    , solver_parameters(solver_parameters)
-    , locally_owned(locally_owned)
-    , locally_relevant(locally_relevant)
-    , mesh_constraints(&mesh_constraints)
-    , near_null_space(near_null_space)
-    , comm(comm)
-    , projection_solver(solver_parameters, comm)
-    , rows(&rows)
+    , system(inputs.system)
+    , solver_parameters(inputs.solver_parameters)
+    , locally_owned(inputs.locally_owned)
+    , locally_relevant(inputs.locally_relevant)
+    , mesh_constraints(&inputs.mesh_constraints)
+    , near_null_space(inputs.near_null_space)
+    , comm(inputs.comm)
+    , projection_solver(inputs.solver_parameters, inputs.comm)
+    , rows(&inputs.rows)
   {
     if (is_static)
       // start with every row active: the bodies are held by the contact
-      displacement_active.assign(rows.size(), 1);
+      displacement_active.assign(inputs.rows.size(), 1);
     set_time_step(tau, true);
     projection_solver.reinit(locally_owned,
                              locally_relevant,
-                             mesh_constraints,
-                             rows);
+                             inputs.mesh_constraints,
+                             inputs.rows);
     if (system.lumped_mass())
       projection_solver.set_diagonal_matrix(*system.M_lumped);
     else

@@ -53,17 +53,10 @@ namespace dyncontact
   {
   public:
     /// @p tau: the step matrix built now (the first step's).
-    TimeIntegrator(const Scheme                         &scheme,
-                   const double                          numerical_dissipation,
-                   const double                          tau,
-                   const SystemMatrices                 &system,
-                   const ActiveSetSolver::Parameters    &solver_parameters,
-                   const IndexSet                       &locally_owned,
-                   const IndexSet                       &locally_relevant,
-                   const AffineConstraints<double>      &mesh_constraints,
-                   const ContactRows                    &rows,
-                   const ActiveSetSolver::NearNullSpace &near_null_space,
-                   const MPI_Comm                        comm);
+    TimeIntegrator(const Scheme             &scheme,
+                   const double              numerical_dissipation,
+                   const double              tau,
+                   const StepOperatorInputs &inputs);
 
     /// The initial velocity of the scheme with the first step's @p tau
     /// (N-CS++: eq. 12c; the others keep udot_0).

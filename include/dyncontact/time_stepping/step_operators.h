@@ -56,6 +56,25 @@ namespace dyncontact
   };
 
   /**
+   * What the step operators are built from: the semi-discrete system's
+   * matrices, its index sets and constraints, the contact rows and the
+   * active-set solver's parameters (StepOperators keeps copies of the
+   * matrices' handles, the parameters and the index sets, and refers to the
+   * constraints and the rows).
+   */
+  struct StepOperatorInputs
+  {
+    const SystemMatrices                 &system;
+    const ActiveSetSolver::Parameters    &solver_parameters;
+    const IndexSet                       &locally_owned;
+    const IndexSet                       &locally_relevant;
+    const AffineConstraints<double>      &mesh_constraints;
+    const ContactRows                    &rows;
+    const ActiveSetSolver::NearNullSpace &near_null_space;
+    MPI_Comm                              comm;
+  };
+
+  /**
    * The operators a time step is written with (ALGORITHMS.md section 4), on
    * the algebraic level, with the numerical dissipation theta (0 in the
    * paper):
@@ -69,17 +88,10 @@ namespace dyncontact
   class StepOperators
   {
   public:
-    StepOperators(const bool                            is_static,
-                  const double                          numerical_dissipation,
-                  const double                          tau,
-                  const SystemMatrices                 &system,
-                  const ActiveSetSolver::Parameters    &solver_parameters,
-                  const IndexSet                       &locally_owned,
-                  const IndexSet                       &locally_relevant,
-                  const AffineConstraints<double>      &mesh_constraints,
-                  const ContactRows                    &rows,
-                  const ActiveSetSolver::NearNullSpace &near_null_space,
-                  const MPI_Comm                        comm);
+    StepOperators(const bool                is_static,
+                  const double              numerical_dissipation,
+                  const double              tau,
+                  const StepOperatorInputs &inputs);
 
     /// Not copied nor moved: a matrix-free S refers to these operators.
     StepOperators(const StepOperators &) = delete;
