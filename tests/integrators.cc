@@ -78,7 +78,8 @@ one_step(const std::string                      &scheme,
     matrix.add(b, B);
     system.add_mass(matrix, m);
   };
-  system.f = &f;
+  system.f     = &f;
+  system.f_end = &f;
   ContactRows rows;
   rows.rows                                        = {row};
   const auto                           constraints = no_constraints(n);

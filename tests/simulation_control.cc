@@ -67,7 +67,7 @@ public:
   }
 
   const StepReport &
-  try_step(const double tau, const bool, TimerOutput &) override
+  try_step(const double tau, const double, const bool, TimerOutput &) override
   {
     trial_steps.push_back(tau);
     report     = StepReport();

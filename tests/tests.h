@@ -461,7 +461,8 @@ namespace testing
   struct Block
   {
     double       x0, x1, y0, y1;
-    unsigned int nx, ny, cell_tag, bottom_tag, top_tag, left_tag = 0;
+    unsigned int nx, ny, cell_tag, bottom_tag, top_tag, left_tag = 0,
+                                                        right_tag = 0;
   };
 
   /// Writes @p blocks as a Gmsh 2.2 ASCII mesh, no vertex shared.
@@ -501,6 +502,10 @@ namespace testing
         for (unsigned int j = 0; j < b.ny && b.left_tag > 0; ++j)
           elements << ++n_elements << " 1 2 " << b.left_tag << " " << b.left_tag
                    << " " << node(0, j) << " " << node(0, j + 1) << "\n";
+        for (unsigned int j = 0; j < b.ny && b.right_tag > 0; ++j)
+          elements << ++n_elements << " 1 2 " << b.right_tag << " "
+                   << b.right_tag << " " << node(b.nx, j) << " "
+                   << node(b.nx, j + 1) << "\n";
       }
     if (this_rank() == 0)
       std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"

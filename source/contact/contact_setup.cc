@@ -140,6 +140,7 @@ namespace dyncontact
                            const ConditionalOStream      &pcout)
   {
     rows.rows.clear();
+    moving_contact_nodes = false;
     unmatched.clear();
     master_surfaces.clear();
     pairs_without_rows.clear();
@@ -196,6 +197,23 @@ namespace dyncontact
                     mapping,
                     w_ghosted,
                     pcout);
+    if (system.has_prescribed_motion())
+      {
+        // the linearised constraint would need a gap that moves with them
+        bool moves = moving_contact_nodes;
+        for (const auto &row : rows.rows)
+          for (const auto &entry : row.entries)
+            moves = moves ||
+                    (entry.second != 0. && system.is_prescribed(entry.first));
+        AssertThrow(!Utilities::MPI::logical_or(moves, comm),
+                    ExcMessage("A contact surface shares nodes with a "
+                               "boundary whose displacement is prescribed "
+                               "and moves (Scene/Gmsh/Prescribed "
+                               "displacements): a contact row would move "
+                               "with it, which is not supported. Give the "
+                               "contact surface and the moving boundary no "
+                               "common node."));
+      }
     // (the counts of the rows per pair only at t = 0, where a pair without
     // rows is refused: an adaptation's set-up makes no collective calls
     // for them)
@@ -401,7 +419,19 @@ namespace dyncontact
               std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
                 ids.end())
             {
-              const auto      face = cell->face(f);
+              const auto face = cell->face(f);
+              // a normal of the (flat) face
+              Tensor<1, dim> face_normal;
+              if constexpr (dim == 2)
+                {
+                  const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+                  face_normal[0]         = t[1];
+                  face_normal[1]         = -t[0];
+                }
+              else
+                face_normal =
+                  cross_product_3d(face->vertex(3) - face->vertex(0),
+                                   face->vertex(2) - face->vertex(1));
               MasterFace<dim> master;
               for (const unsigned int v : face->vertex_indices())
                 master.vertices.push_back(face->vertex(v));
@@ -419,6 +449,12 @@ namespace dyncontact
                   if (node < face->n_vertices())
                     master.vertex_dofs[node * dim + c] = dof;
                   auto &entries = master.node_dofs[node][c];
+                  // (a node that moves with prescribed data along the
+                  // face's normal: refused in setup())
+                  if (system.has_prescribed_motion() &&
+                      system.is_prescribed(dof) &&
+                      std::abs(face_normal[c]) > 1e-12 * face_normal.norm())
+                    moving_contact_nodes = true;
                   if (mesh_constraints.is_constrained(dof))
                     {
                       // hanging: its parents; Dirichlet: nothing (fixed)

@@ -154,6 +154,8 @@ namespace dyncontact
       control.n_checkpoint_vectors(state));
     p.load(Checkpoints::mesh_file(dir), flags, controller_vectors);
     control.load(state, p.get_contact().get_rows(), flags, controller_vectors);
+    // (loads that change in time: those of the checkpoint's time)
+    p.set_load_time(control.get_time());
     vtu_writer->load(state);
     mesh_adaptor->load(state);
     if (state.count("refinement_pending") &&

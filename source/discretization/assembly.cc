@@ -407,6 +407,16 @@ namespace dyncontact
       return;
     load.compress(VectorOperation::add);
     boundary_weights.compress(VectorOperation::add);
+    // the loads given as functions, at the present time
+    function_loads = scene.function_loads();
+    if (!function_loads.empty())
+      {
+        constant_load = load;
+        assemble_function_loads(load_time, load);
+        if (function_loads.time_dependent)
+          for (VectorType *v : {&previous_load, &end_load, &step_load})
+            reinit_vector(*v);
+      }
     elastic_operator.reinit(mapping, dof_handler, materials);
     stiffness_product.reinit(
       [this](VectorType &y, const VectorType &x) { stiffness_vmult(y, x); });

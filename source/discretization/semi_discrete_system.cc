@@ -168,32 +168,6 @@ namespace dyncontact
 
   template <int dim>
   void
-  SemiDiscreteSystem<dim>::make_constraints(const Scene<dim> &scene)
-  {
-    // hanging nodes and homogeneous Dirichlet data
-    constraints.clear();
-    constraints.reinit(locally_relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const auto &boundary : scene.dirichlet_boundaries())
-      {
-        std::vector<bool> components(dim);
-        for (unsigned int d = 0; d < dim; ++d)
-          components[d] = boundary.components[d];
-        VectorTools::interpolate_boundary_values(mapping,
-                                                 dof_handler,
-                                                 boundary.id,
-                                                 Functions::ZeroFunction<dim>(
-                                                   dim),
-                                                 constraints,
-                                                 ComponentMask(components));
-      }
-    constraints.close();
-  }
-
-
-
-  template <int dim>
-  void
   SemiDiscreteSystem<dim>::index_owned_nodes(const unsigned int n_bodies)
   {
     // for each locally owned DoF its slot body * dim + component (the
@@ -553,7 +527,9 @@ namespace dyncontact
       [this](VectorType &d, double a, double b) {
         stiffness_diagonal(d, a, b);
       };
-    system.f = &load;
+    system.f          = function_loads.time_dependent ? &step_load : &load;
+    system.f_end      = function_loads.time_dependent ? &end_load : &load;
+    system.prescribed = prescribed.get();
     return system;
   }
 

@@ -2,8 +2,12 @@
 // f^T u, and the viscous dissipation W_visc += (du)^T B (du) / tau,
 // accumulated over the steps, and with Time integration/Numerical
 // dissipation theta > 0 the scheme's own dissipation W_num += theta (du)^T A
-// (du); E_kin + E_el + W_visc (+ W_num) is constant without contact and
-// non-increasing with contact.
+// (du); with loads that change in time (f(t)) the work of their change
+// W_load -= 1/2 (f^{n+1} - f^n)^T (u^n + u^{n+1}) (column work_load_change),
+// and with Dirichlet data that move the work of their force R on the body
+// W_D += R^T (u^{n+1} - u^n) (column work_prescribed);
+// E_kin + E_el + W_visc (+ W_num) (- W_load - W_D) is constant without
+// contact and non-increasing with contact.
 //
 // The balance monitor: energy_balance = E + W_visc (+ W_num) - E(0) minus the
 // energy
@@ -52,6 +56,16 @@ namespace dyncontact
             for (unsigned int r = 0; r < dissipation.size(); ++r)
               dissipation[r] += w_num[r];
           }
+        // the energy the loads' change in time supplied counts as a source
+        const bool load_change = s.has_column("work_load_change");
+        const bool moving      = s.has_column("work_prescribed");
+        for (const std::string column : {"work_load_change", "work_prescribed"})
+          if (s.has_column(column))
+            {
+              const auto w = s.column(column);
+              for (unsigned int r = 0; r < dissipation.size(); ++r)
+                dissipation[r] -= w[r];
+            }
         const auto         balance = s.column("energy_balance");
         const std::string  energy  = input.dim == 2 ? "J/m" : "J";
         const unsigned int last    = s.rows.size() - 1;
@@ -59,9 +73,9 @@ namespace dyncontact
         unsigned           at = 0;
         for (unsigned int r = 0; r <= last; ++r)
           {
-            scale =
-              std::max(scale,
-                       kinetic[r] + std::abs(elastic[r]) + dissipation[r]);
+            scale = std::max(scale,
+                             kinetic[r] + std::abs(elastic[r]) +
+                               std::abs(dissipation[r]));
             if (r > 0 && balance[r] - balance[r - 1] > increase)
               {
                 increase = balance[r] - balance[r - 1];
@@ -71,7 +85,8 @@ namespace dyncontact
         const double       relative = increase / std::max(scale, 1e-300);
         std::ostringstream out;
         out << std::setprecision(6) << "energy E + W_visc"
-            << (numerical ? " + W_num" : "") << ": "
+            << (numerical ? " + W_num" : "") << (load_change ? " - W_load" : "")
+            << (moving ? " - W_D" : "") << ": "
             << kinetic[0] + elastic[0] + dissipation[0] << " " << energy
             << " at the start, "
             << kinetic[last] + elastic[last] + dissipation[last] << " "
@@ -100,6 +115,10 @@ namespace dyncontact
                                           "energy_balance"};
         if (theta() > 0.)
           names.insert(names.begin() + 3, "dissipation_numerical");
+        if (loads_change())
+          names.insert(names.end() - 2, "work_load_change");
+        if (moves())
+          names.insert(names.end() - 2, "work_prescribed");
         return names;
       }
 
@@ -123,15 +142,36 @@ namespace dyncontact
           }
         if (this->get_control().get_step() > 0)
           numerical += this->get_step_report().numerical_dissipation;
-        const double       total = kinetic + elastic + dissipation + numerical;
-        const unsigned int step  = this->get_control().get_step();
+        if (this->get_control().get_step() > 0 && loads_change() && !is_static)
+          {
+            // the work of the loads' change: with E_el = 1/2 u^T A u -
+            // f(t)^T u, a step changes E by -1/2 (f^{n+1} - f^n)^T (u^n +
+            // u^{n+1}) beyond the dissipation (doc/algorithms.md)
+            VectorType df(system.get_load()), sum(u);
+            df -= system.get_previous_load();
+            sum += this->get_old_solution();
+            load_work -= 0.5 * (df * sum);
+          }
+        if (this->get_control().get_step() > 0 && moves() && !is_static)
+          {
+            // the work of the Dirichlet data that move: their force on the
+            // body times the step's displacement there
+            VectorType du(u);
+            du -= this->get_old_solution();
+            prescribed_work +=
+              this->get_integrator().get_operators().prescribed_reaction() * du;
+          }
+        const double total = kinetic + elastic + dissipation + numerical -
+                             load_work - prescribed_work;
+        const unsigned int step = this->get_control().get_step();
         if (step == 0)
           initial = total;
         else
           transfers += this->get_mesh_transfer().energy_change;
         const double balance   = is_static ? 0. : total - initial - transfers;
         scale                  = std::max(scale,
-                         kinetic + std::abs(elastic) + dissipation + numerical);
+                         kinetic + std::abs(elastic) + dissipation + numerical +
+                           std::abs(load_work) + std::abs(prescribed_work));
         const double tolerance = this->get_integrator()
                                    .get_operators()
                                    .get_solver_parameters()
@@ -161,6 +201,10 @@ namespace dyncontact
         row.insert(row.end(), {kinetic, elastic, dissipation});
         if (theta() > 0.)
           row.push_back(numerical);
+        if (loads_change())
+          row.push_back(load_work);
+        if (moves())
+          row.push_back(prescribed_work);
         row.insert(row.end(), {kinetic + elastic, balance});
       }
 
@@ -177,6 +221,18 @@ namespace dyncontact
             std::ostringstream w;
             w << std::setprecision(17) << numerical;
             state["numerical_dissipation"] = w.str();
+          }
+        if (loads_change())
+          {
+            std::ostringstream w;
+            w << std::setprecision(17) << load_work;
+            state["load_change_work"] = w.str();
+          }
+        if (moves())
+          {
+            std::ostringstream w;
+            w << std::setprecision(17) << prescribed_work;
+            state["prescribed_work"] = w.str();
           }
       }
 
@@ -200,6 +256,10 @@ namespace dyncontact
         // parameters a resumed run must keep)
         if (state.count("numerical_dissipation"))
           numerical = std::stod(state.at("numerical_dissipation"));
+        if (state.count("load_change_work"))
+          load_work = std::stod(state.at("load_change_work"));
+        if (state.count("prescribed_work"))
+          prescribed_work = std::stod(state.at("prescribed_work"));
       }
 
     private:
@@ -210,8 +270,26 @@ namespace dyncontact
         return this->get_time_integration().numerical_dissipation;
       }
 
-      double       dissipation      = 0.;
-      double       numerical        = 0.;
+      /// Whether the scene's loads change in time (FunctionLoads).
+      bool
+      loads_change() const
+      {
+        return this->get_scene().function_loads().time_dependent;
+      }
+
+      double dissipation = 0.;
+      double numerical   = 0.;
+      /// Whether Dirichlet data move (Scene::prescribed_displacements()).
+      bool
+      moves() const
+      {
+        return !this->get_scene().prescribed_displacements().empty();
+      }
+
+      /// the work of the loads' change in time, W_load, and of the
+      /// Dirichlet data that move, W_D
+      double       load_work        = 0.;
+      double       prescribed_work  = 0.;
       double       initial          = 0.;
       double       transfers        = 0.;
       double       scale            = 0.;

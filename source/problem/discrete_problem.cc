@@ -239,6 +239,8 @@ namespace dyncontact
                  "nodes start at zero (and the initial energy lacks their "
                  "share)."
               << std::endl;
+    // Dirichlet data that move: u = g(0) and udot = dg/dt(0) on their nodes
+    system->set_prescribed_state(0., 1e-3 * tau, u, &udot);
     make_integrator(tau, timer);
     project_initial_penetration();
     contact->refuse_initial_overlap(u);
@@ -351,7 +353,17 @@ namespace dyncontact
   {
     copy_with_layout(u_old, u);
     copy_with_layout(udot_old, udot);
-    start_sets = integrator->active_sets();
+    start_sets   = integrator->active_sets();
+    load_stepped = false;
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::set_load_time(const double t)
+  {
+    system->set_load_time(t);
   }
 
 
@@ -359,13 +371,21 @@ namespace dyncontact
   template <int dim>
   const StepReport &
   DiscreteProblem<dim>::try_step(const double tau,
+                                 const double t_end,
                                  const bool   level_step,
                                  TimerOutput &timer)
   {
+    if (system->loads_change_in_time())
+      {
+        TimerOutput::Scope t(timer, "loads that change in time");
+        system->begin_step_load(t_end);
+      }
     {
       TimerOutput::Scope t(timer, "time step");
       report = integrator->step(tau, level_step, u, udot);
     }
+    system->end_step_load();
+    load_stepped = true;
     check_inertia();
     return report;
   }
@@ -388,6 +408,9 @@ namespace dyncontact
     const auto active = from_trial ? integrator->active_sets() : start_sets;
     u                 = u_old;
     udot              = udot_old;
+    if (load_stepped)
+      system->undo_step_load();
+    load_stepped = false;
     integrator->warm_start(active.first, active.second);
   }
 
@@ -462,6 +485,11 @@ namespace dyncontact
     {
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       system->interpolate_after_refinement(u, udot);
+      // (Dirichlet data that move: their values on the new mesh's nodes)
+      system->set_prescribed_state(system->get_load_time(),
+                                   1e-3 * tau,
+                                   u,
+                                   &udot);
     }
     make_integrator(tau, timer, true);
 

@@ -3,12 +3,15 @@
 #include <deal.II/base/utilities.h>
 
 #include <dyncontact/base/collective_errors.h>
+#include <dyncontact/scenes/gmsh_entries.h>
 #include <dyncontact/scenes/gmsh_scene.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,7 +20,7 @@
 
 namespace dyncontact
 {
-  namespace
+  namespace GmshEntries
   {
     /// Function constants: 'name = value', comma-separated.
     std::map<std::string, double>
@@ -60,7 +63,131 @@ namespace dyncontact
         }
       return constants;
     }
-  } // namespace
+
+
+
+    std::vector<std::string>
+    split_top_level(const std::string &text, const char separator)
+    {
+      std::vector<std::string> items;
+      std::string              item;
+      int                      depth = 0;
+      for (const char c : text)
+        {
+          depth += (c == '(') - (c == ')');
+          if (c == separator && depth == 0)
+            {
+              items.push_back(Utilities::trim(item));
+              item.clear();
+            }
+          else
+            item += c;
+        }
+      if (!text.empty())
+        items.push_back(Utilities::trim(item));
+      return items;
+    }
+
+
+
+    bool
+    mentions_time(const std::vector<std::string> &expressions)
+    {
+      const auto identifier = [](const char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+      };
+      for (const std::string &e : expressions)
+        for (std::size_t k = 0; k < e.size(); ++k)
+          if (e[k] == 't' && (k == 0 || !identifier(e[k - 1])) &&
+              (k + 1 == e.size() || !identifier(e[k + 1])))
+            return true;
+      return false;
+    }
+
+
+
+    template <int dim>
+    std::shared_ptr<FunctionParser<dim>>
+    make_function(const std::string                   &entry,
+                  const std::vector<std::string>      &expressions,
+                  const std::map<std::string, double> &constants,
+                  const bool                           of_time)
+    {
+      // (pi as in deal.II's ParsedFunction, unless Function constants
+      // gives it)
+      std::map<std::string, double> with_pi = constants;
+      with_pi.emplace("pi", numbers::PI);
+      std::string variables = FunctionParser<dim>::default_variable_names();
+      if (of_time)
+        variables += ",t";
+      // (muparser reads the expressions at the first evaluation and throws
+      // its own type)
+      const auto problem_of = [&](FunctionParser<dim>            &parser,
+                                  const std::vector<std::string> &e) {
+        // (deal.II prints muparser's report on std::cerr before it throws;
+        // the message below has it)
+        std::ostringstream quiet;
+        struct Restore
+        {
+          std::streambuf *buffer;
+          ~Restore()
+          {
+            std::cerr.rdbuf(buffer);
+          }
+        } restore{std::cerr.rdbuf(quiet.rdbuf())};
+        try
+          {
+            parser.initialize(variables, e, with_pi, of_time);
+            for (unsigned int d = 0; d < e.size(); ++d)
+              (void)parser.value(Point<dim>(), d);
+          }
+        catch (const std::exception &error)
+          {
+            return message_of(error);
+          }
+        catch (...)
+          {
+            return std::string("the parser refused it");
+          }
+        return std::string();
+      };
+      auto function = std::make_shared<FunctionParser<dim>>(expressions.size());
+      std::string problem = problem_of(*function, expressions);
+      // name the component that fails
+      for (unsigned int d = 0;
+           !problem.empty() && d < expressions.size() && expressions.size() > 1;
+           ++d)
+        {
+          FunctionParser<dim> one(1);
+          const std::string   own = problem_of(one, {expressions[d]});
+          if (!own.empty())
+            {
+              problem = "component " + std::to_string(d + 1) + " ('" +
+                        expressions[d] + "'): " + own;
+              break;
+            }
+        }
+      AssertThrow(problem.empty(),
+                  ExcMessage("Scene/Gmsh/" + entry +
+                             " cannot be read (variables x, y" +
+                             (dim == 3 ? ", z" : "") + (of_time ? ", t" : "") +
+                             ", the constant 'body' where it is per body, and "
+                             "those of Function constants): " +
+                             problem));
+      return function;
+    }
+
+    template std::shared_ptr<FunctionParser<2>>
+    make_function<2>(const std::string &,
+                     const std::vector<std::string> &,
+                     const std::map<std::string, double> &,
+                     const bool);
+    template std::shared_ptr<FunctionParser<3>>
+    make_function<3>(const std::string &,
+                     const std::vector<std::string> &,
+                     const std::map<std::string, double> &,
+                     const bool);
+  } // namespace GmshEntries
 
 
 
@@ -68,7 +195,8 @@ namespace dyncontact
   void
   GmshScene<dim>::parse_initial_functions(ParameterHandler &prm)
   {
-    const auto constants = parse_constants(prm.get("Function constants"));
+    const auto constants =
+      GmshEntries::parse_constants(prm.get("Function constants"));
     displacement_functions.clear();
     velocity_functions.clear();
     for (const auto &[entry, functions] :
@@ -90,51 +218,8 @@ namespace dyncontact
           {
             auto with_body    = constants;
             with_body["body"] = b + 1;
-            auto function     = std::make_shared<FunctionParser<dim>>(dim);
-            // (muparser reads the expressions at the first evaluation and
-            // throws its own type)
-            const auto problem_of = [&](FunctionParser<dim>            &parser,
-                                        const std::vector<std::string> &e) {
-              try
-                {
-                  parser.initialize(
-                    FunctionParser<dim>::default_variable_names(),
-                    e,
-                    with_body);
-                  for (unsigned int d = 0; d < e.size(); ++d)
-                    (void)parser.value(Point<dim>(), d);
-                }
-              catch (const std::exception &error)
-                {
-                  return message_of(error);
-                }
-              catch (...)
-                {
-                  return std::string("the parser refused it");
-                }
-              return std::string();
-            };
-            std::string problem = problem_of(*function, expressions);
-            // name the component that fails
-            for (unsigned int d = 0; !problem.empty() && d < dim; ++d)
-              {
-                FunctionParser<dim> one(1);
-                const std::string   own = problem_of(one, {expressions[d]});
-                if (!own.empty())
-                  {
-                    problem = "component " + std::to_string(d + 1) + " ('" +
-                              expressions[d] + "'): " + own;
-                    break;
-                  }
-              }
-            AssertThrow(problem.empty(),
-                        ExcMessage("Scene/Gmsh/" + entry + " = '" + text +
-                                   "' cannot be read (variables x, y" +
-                                   (dim == 3 ? ", z" : "") +
-                                   ", the constant 'body' and those of "
-                                   "Function constants): " +
-                                   problem));
-            functions->push_back(function);
+            functions->push_back(GmshEntries::make_function<dim>(
+              entry + " = '" + text + "'", expressions, with_body, false));
           }
       }
     if (!velocity_functions.empty())

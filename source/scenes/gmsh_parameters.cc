@@ -78,7 +78,10 @@ namespace dyncontact
                       "A traction of its own per boundary tag, items "
                       "separated by ';': 'tag: components in Pa', e.g. "
                       "'13: 0, -2; 14: 1, 0' (each component in [-1e15, "
-                      "1e15]); a tag here must not be in Neumann tags.");
+                      "1e15]), or functions of x, y (, z) and t in s "
+                      "(muparser syntax, constants of Function constants), "
+                      "e.g. '13: 0, -2*min(t/0.1, 1)'; a tag here must not "
+                      "be in Neumann tags.");
     prm.declare_entry("Contact tags of body 1",
                       "",
                       Patterns::Anything(),
@@ -179,9 +182,41 @@ namespace dyncontact
     prm.declare_entry("Function constants",
                       "",
                       Patterns::Anything(),
-                      "Named constants of Initial displacement and Initial "
-                      "velocity, comma-separated 'name = value' (e.g. "
-                      "'omega = 2, R = 0.5').");
+                      "Named constants of the functions (Initial "
+                      "displacement, Initial velocity, Body force, "
+                      "Pressures, Neumann tractions, Prescribed "
+                      "displacements), comma-separated 'name = value' "
+                      "(e.g. 'omega = 2, R = 0.5').");
+    prm.declare_entry(
+      "Body force",
+      "",
+      Patterns::Anything(),
+      "A body force density in N/m^3 (in 2D per unit thickness) as a "
+      "function of x, y (, z) and t in s, its components separated by ';' "
+      "(muparser syntax, with the constant 'body' and those of Function "
+      "constants), added to rho g of Gravity, e.g. '0; -1e4*min(t/0.1, 1)'. "
+      "A function of t is evaluated at every step's end, one of x only once "
+      "per mesh. Empty: none.");
+    prm.declare_entry(
+      "Prescribed displacements",
+      "",
+      Patterns::Anything(),
+      "Displacements that move, per tag of Dirichlet tags, in m, as "
+      "functions of x, y (, z) and t in s, items separated by ';': 'tag: "
+      "components' (muparser syntax, constants of Function constants), "
+      "e.g. '11: 0, -0.01*(1 - cos(pi*min(t/0.2, 1)))/2'. Only the "
+      "components the tag fixes move (the others must be 0). A node shared "
+      "with a tag that holds zero stays at zero. Needs Time "
+      "integration/Mass matrix = lumped.");
+    prm.declare_entry(
+      "Pressures",
+      "",
+      Patterns::Anything(),
+      "A normal pressure per boundary tag in Pa, positive pushing into the "
+      "body (the traction -p n), as a function of x, y (, z) and t in s, "
+      "items separated by ';': 'tag: expression', e.g. '11: 1e5*min(t/0.2, "
+      "1); 12: 2e4'. A tag has at most one load (Neumann tags, Neumann "
+      "tractions, Pressures).");
     prm.declare_entry(
       "Manifolds",
       "",
@@ -219,10 +254,14 @@ namespace dyncontact
       unread.emplace_back("Scene/Gmsh/Initial velocity of body 2",
                           "the mesh has one body (Scene/Gmsh/Body 2 tags is "
                           "empty)");
-    if (displacement_functions.empty() && velocity_functions.empty())
+    if (displacement_functions.empty() && velocity_functions.empty() &&
+        traction_functions.empty() && pressure_functions.empty() &&
+        body_force_functions.empty() && prescribed_functions.empty())
       unread.emplace_back("Scene/Gmsh/Function constants",
-                          "neither Scene/Gmsh/Initial displacement nor "
-                          "Initial velocity is given");
+                          "no function uses them (Initial displacement, "
+                          "Initial velocity, Body force, Pressures, "
+                          "Prescribed displacements or a traction of Neumann "
+                          "tractions that is no number)");
     return unread;
   }
 
@@ -242,34 +281,6 @@ namespace dyncontact
                                  1e15,
                                  "Pa");
     gravity = parse_vector<dim>(prm.get("Gravity"), "Gravity", 1e15, "m/s^2");
-    tag_tractions.clear();
-    for (const std::string &item :
-         split_items(prm.get("Neumann tractions"), ';'))
-      {
-        if (item.empty())
-          continue;
-        const std::size_t colon = item.find(':');
-        AssertThrow(colon != std::string::npos,
-                    ExcMessage("Scene/Gmsh/Neumann tractions: '" + item +
-                               "' is no 'tag: components'."));
-        const auto tags = parse_tags(Utilities::trim(item.substr(0, colon)),
-                                     "Neumann tractions ('" + item + "')");
-        AssertThrow(tags.size() == 1,
-                    ExcMessage("Scene/Gmsh/Neumann tractions: '" + item +
-                               "' is no 'tag: components'."));
-        const unsigned int tag = *tags.begin();
-        AssertThrow(neumann_tags.count(tag) == 0 &&
-                      tag_tractions.count(tag) == 0,
-                    ExcMessage("Scene/Gmsh/Neumann tractions: tag " +
-                               std::to_string(tag) +
-                               " has a traction already (listed twice, or "
-                               "in Neumann tags)."));
-        tag_tractions[tag] =
-          parse_vector<dim>(item.substr(colon + 1),
-                            "Neumann tractions ('" + item + "')",
-                            1e15,
-                            "Pa");
-      }
     parse_manifolds(prm);
     const std::string bodies = prm.get("Bodies");
     body_tags.clear();
@@ -289,6 +300,7 @@ namespace dyncontact
         parse_obstacle(prm);
         refuse_unpaired_contact_tags();
       }
+    parse_loads(prm);
     parse_initial_functions(prm);
     prm.leave_subsection();
     prm.leave_subsection();

@@ -329,6 +329,14 @@ namespace dyncontact
                           "Neumann tractions",
                           tag_tractions,
                           mesh_file);
+    require_boundary_tags(face_tags,
+                          "Neumann tractions",
+                          traction_functions,
+                          mesh_file);
+    require_boundary_tags(face_tags,
+                          "Pressures",
+                          pressure_functions,
+                          mesh_file);
     for (unsigned int b = 0; b < contact_tags.size(); ++b)
       require_boundary_tags(face_tags,
                             contact_entries[b],

@@ -160,9 +160,11 @@ namespace dyncontact
       {
         // (trial_timestep() decides whether the trial is shortened)
         const double      trial_tau = trial_timestep();
-        const StepReport &report =
-          problem.try_step(trial_tau, !step_is_shortened(), timer);
-        const bool finite = problem.trial_is_finite();
+        const StepReport &report    = problem.try_step(trial_tau,
+                                                    end_of_trial(),
+                                                    !step_is_shortened(),
+                                                    timer);
+        const bool        finite    = problem.trial_is_finite();
         if (!report.converged() || !finite)
           {
             // back to the last good state, warm started from the failed
@@ -191,6 +193,17 @@ namespace dyncontact
 
 
 
+  double
+  SimulationControl::end_of_trial() const
+  {
+    // (as accept() counts it: from t_base, or from t_n if tau changed)
+    if (is_static)
+      return end_time;
+    return tau_changed ? time + tau : time_base + (steps_since + 1) * tau;
+  }
+
+
+
   StepMoments
   SimulationControl::accept()
   {
@@ -198,7 +211,9 @@ namespace dyncontact
     // step, and grows where the estimates allow it
     const double step_tau     = tau;
     const bool   step_changed = tau_changed;
-    tau_changed               = false;
+    const double new_time     = end_of_trial();
+    (void)new_time;
+    tau_changed = false;
     if (tau != tau_level)
       {
         tau         = tau_level;
@@ -217,6 +232,7 @@ namespace dyncontact
       }
     ++steps_since;
     time = is_static ? end_time : time_base + steps_since * step_tau;
+    Assert(time == new_time, ExcInternalError());
 
     // the last step is an output too, but the next output time moves on
     // only when it is reached (a resumed run writes the same outputs)

@@ -75,7 +75,10 @@ namespace dyncontact
         system.add_mass(preconditioner,
                         1e-2 * S.linfty_norm() / system.mass_linfty_norm());
         solver.set_matrix(S, &preconditioner);
-        step_matrix->diagonal = matrix_diagonal(S);
+        step_matrix->diagonal  = matrix_diagonal(S);
+        step_matrix->S_product = [&S](VectorType &y, const VectorType &x) {
+          S.vmult(y, x);
+        };
       }
     else
       {
@@ -99,6 +102,7 @@ namespace dyncontact
               system.mass_vmult(y, x);
               y += step->stiffness_part;
             };
+            step_matrix->S_product = S_vmult;
             // p-multigrid, or Jacobi
             solver.set_operator(
               S_vmult,
@@ -111,7 +115,10 @@ namespace dyncontact
           {
             // assembled cell by cell
             system.assemble_stiffness(S, a, b, 1.);
-            S_diagonal = matrix_diagonal(S);
+            S_diagonal             = matrix_diagonal(S);
+            step_matrix->S_product = [&S](VectorType &y, const VectorType &x) {
+              S.vmult(y, x);
+            };
           }
         // how far the stiffness and viscosity outweigh the mass in S
         const double *S_ii = S_diagonal.begin(), *M_ii = M_diagonal.begin();
@@ -190,9 +197,35 @@ namespace dyncontact
                                     VectorType       &v,
                                     StepReport       &report)
   {
-    report.displacement_solve =
-      current->solver->solve(r, v, displacement_active, report.multipliers);
+    const PrescribedMotion *prescribed = system.prescribed;
+    if (prescribed == nullptr)
+      {
+        report.displacement_solve =
+          current->solver->solve(r, v, displacement_active, report.multipliers);
+        report.active = displacement_active;
+        return;
+      }
+    // Dirichlet data that move: v = v~ + G, v~ with the homogeneous
+    // constraints for r - S G (doc/algorithms.md, "Prescribed
+    // displacements")
+    const VectorType &G = prescribed->at_end;
+    VectorType        r_free(r), S_x(r);
+    current->S_product(S_x, G);
+    r_free -= S_x;
+    v -= G;
+    report.displacement_solve = current->solver->solve(r_free,
+                                                       v,
+                                                       displacement_active,
+                                                       report.multipliers);
+    v += G;
     report.active = displacement_active;
+    // the force of the prescribed DoFs on the body: the residual there,
+    // scaled as the contact force (eq. 13)
+    current->S_product(S_x, v);
+    S_x -= r;
+    S_x *= is_static ? 1. : 2. / (current->tau * current->tau);
+    reaction.reinit(r, false);
+    prescribed->reaction_of(S_x, reaction);
   }
 
 
@@ -200,12 +233,21 @@ namespace dyncontact
   void
   StepOperators::project(const VectorType &w, VectorType &v, StepReport &report)
   {
+    // Dirichlet data that move: the projection keeps w there (the lumped
+    // M couples no DoFs) and projects the rest
+    VectorType W;
+    if (system.prescribed != nullptr)
+      system.prescribed->part_of(w, W);
     VectorType          r(w);
     std::vector<double> multipliers;
-    system.mass_vmult(r, w);
     v = w;
+    if (system.prescribed != nullptr)
+      v -= W;
+    system.mass_vmult(r, v);
     report.projection_solve =
       projection_solver.solve(r, v, projection_active, multipliers);
+    if (system.prescribed != nullptr)
+      v += W;
     report.projection_active = projection_active;
   }
 

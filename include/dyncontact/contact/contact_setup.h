@@ -308,7 +308,10 @@ namespace dyncontact
     std::vector<std::array<std::string, 2>>                     side_bodies;
     /// Whether the scene has more than one pair (the obstacle counted):
     /// messages and the banner number them.
-    bool               several_pairs = false;
+    bool several_pairs = false;
+    /// Whether local_faces() met a node that moves with prescribed data
+    /// along its face's normal.
+    mutable bool       moving_contact_nodes = false;
     IndexSet           locally_owned;
     IndexSet           locally_relevant;
     ContactRowOperator row_operator;

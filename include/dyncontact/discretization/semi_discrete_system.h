@@ -59,6 +59,33 @@ namespace dyncontact
   };
 
   /**
+   * Dirichlet DoFs whose displacement is prescribed and moves
+   * (Scene::prescribed_displacements()): a step solves for v - G with the
+   * homogeneous constraints and adds G, the prescribed values
+   * (doc/algorithms.md, "Prescribed displacements").
+   */
+  struct PrescribedMotion
+  {
+    /// The locally owned prescribed DoFs, sorted.
+    std::vector<types::global_dof_index> dofs;
+    /// The locally owned hanging DoFs whose parents include prescribed DoFs
+    /// (of any rank): the weights of those parents; their values follow.
+    std::vector<
+      std::pair<types::global_dof_index,
+                std::vector<std::pair<types::global_dof_index, double>>>>
+      children;
+    /// G at the end of the present trial step (the prescribed DoFs and
+    /// their children; zero elsewhere).
+    VectorType at_end;
+    /// W = w on the prescribed DoFs and their children, zero elsewhere
+    /// (collective).
+    std::function<void(const VectorType &w, VectorType &W)> part_of;
+    /// R += the force r on the prescribed DoFs, with a hanging child's
+    /// force passed to its parents by its weights (collective).
+    std::function<void(const VectorType &r, VectorType &R)> reaction_of;
+  };
+
+  /**
    * The operators and the load of the semi-discrete problem that a time
    * integrator needs. The mass is either a consistent matrix M or, lumped,
    * its diagonal M_lumped (no sparse matrix is kept for it). The elastic
@@ -89,8 +116,14 @@ namespace dyncontact
                           double            b,
                           const Product    &S_vmult,
                           const VectorType &S_diagonal)>
-                      step_preconditioner;
+      step_preconditioner;
+    /// The load of the step: f, or with loads that change in time
+    /// (f(t_n) + f(t_{n+1})) / 2 (SemiDiscreteSystem::begin_step_load()).
     const VectorType *f = nullptr;
+    /// The load at the step's end, f(t_{n+1}) (the static problem's).
+    const VectorType *f_end = nullptr;
+    /// Dirichlet data that move, or nullptr.
+    const PrescribedMotion *prescribed = nullptr;
 
     /// Whether there is a viscous form B.
     bool
@@ -334,10 +367,63 @@ namespace dyncontact
                               const double a,
                               const double b,
                               const double m) const;
+    /// The load f at the present time (get_load_time()).
     const VectorType &
     get_load() const
     {
       return load;
+    }
+    /// Whether the scene's loads change in time (FunctionLoads) or its
+    /// Dirichlet data move: then every step evaluates them at its end.
+    bool
+    loads_change_in_time() const
+    {
+      return function_loads.time_dependent || prescribed != nullptr;
+    }
+    /// Whether Dirichlet data move (Scene::prescribed_displacements()).
+    bool
+    has_prescribed_motion() const
+    {
+      return prescribed != nullptr;
+    }
+    /// Sets @p u (and @p udot unless nullptr) on the prescribed DoFs and
+    /// their children to the prescribed displacement at @p t (its time
+    /// derivative by central differences, with the step @p delta_t
+    /// remembered for later calls with delta_t = 0). Collective.
+    void
+    set_prescribed_state(const double t,
+                         const double delta_t,
+                         VectorType  &u,
+                         VectorType  *udot);
+    /// Whether the DoF @p dof (locally relevant) is prescribed and moves.
+    bool
+    is_prescribed(const types::global_dof_index dof) const;
+    /// The time of get_load() (s).
+    double
+    get_load_time() const
+    {
+      return load_time;
+    }
+    /// f at time @p t (collective; only loads that change in time are
+    /// evaluated again).
+    void
+    set_load_time(const double t);
+    /// Before a trial step to @p t_end: f(t_end) (matrices().f_end) and the
+    /// step's load (f(t_n) + f(t_end)) / 2 (matrices().f).
+    void
+    begin_step_load(const double t_end);
+    /// After the trial: get_load() is f(t_end), get_previous_load() f(t_n).
+    void
+    end_step_load();
+    /// Back to the start of the step: get_load() is f(t_n) again.
+    void
+    undo_step_load();
+    /// With loads that change in time, after end_step_load(): f(t_n) of the
+    /// step's start.
+    const VectorType &
+    get_previous_load() const
+    {
+      return previous_load;
     }
     /// w_p = int_{Gamma_C} psi_p ds at every DoF of the contact boundaries.
     const VectorType &
@@ -396,9 +482,18 @@ namespace dyncontact
     /// rows, columns of the locally relevant DoFs), shared by the matrices
     /// built on it.
     std::unique_ptr<Epetra_CrsGraph> graph;
-    /// Hanging nodes and the scene's homogeneous Dirichlet data.
+    /// Hanging nodes and the scene's homogeneous Dirichlet data, and the
+    /// prescribed DoFs of the boundaries that move (in dirichlet_data.cc).
     void
     make_constraints(const Scene<dim> &scene);
+    /// @p G = the prescribed values at @p t on the prescribed DoFs and
+    /// their children, zero elsewhere (collective).
+    void
+    prescribed_values(const double t, VectorType &G) const;
+    /// Sets the children of the prescribed DoFs in @p G from their parents
+    /// (collective).
+    void
+    set_children(VectorType &G) const;
     /// For each locally owned DoF its body and component, the DoFs of each
     /// body and the rigid translations.
     void
@@ -415,6 +510,10 @@ namespace dyncontact
     /// over the boundary as the mesh represents it (in assembly.cc).
     std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
     boundary_tractions(const Scene<dim> &scene) const;
+    /// @p f = the constant load plus the function loads at time @p t (in
+    /// function_loads.cc).
+    void
+    assemble_function_loads(const double t, VectorType &f) const;
     /// A zero matrix on the graph.
     void
     reinit_matrix(MatrixType &matrix) const;
@@ -425,8 +524,34 @@ namespace dyncontact
     VectorType           lumped_mass_diagonal;
     ElasticOperator<dim> elastic_operator;
     CachedProduct        stiffness_product;
-    VectorType           load;
-    VectorType           boundary_weights;
+    /// f at load_time (the constant loads plus the function loads)
+    VectorType load;
+    double     load_time = 0.;
+    /// the scene's loads given as functions, and the constant part of f
+    /// (the scene's constant loads), kept where they change in time
+    FunctionLoads<dim> function_loads;
+    VectorType         constant_load;
+    /// with loads that change in time: f at the start and the end of the
+    /// step, and the step's load (their mean)
+    VectorType previous_load;
+    VectorType end_load;
+    VectorType step_load;
+    double     previous_load_time = 0.;
+    double     end_load_time      = 0.;
+    /// Dirichlet data that move: each boundary with its function and the
+    /// components it fixes, the prescribed DoFs among the locally relevant
+    /// ones (sorted), and the time step of the central differences.
+    struct MovingBoundary
+    {
+      types::boundary_id id;
+      Function<dim>     *function;
+      std::vector<bool>  components;
+    };
+    std::vector<MovingBoundary>          moving_boundaries;
+    std::vector<types::global_dof_index> relevant_prescribed;
+    std::unique_ptr<PrescribedMotion>    prescribed;
+    double                               prescribed_delta = 0.;
+    VectorType                           boundary_weights;
 
     /// A state in transfer (refinement or checkpoint) and its ghosted copy
     /// for p4est's transfer, or the transfer on a serial triangulation.

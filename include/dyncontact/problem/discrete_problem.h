@@ -142,6 +142,9 @@ namespace dyncontact
 
     /// The integrator for @p tau with the active sets of @p flags, unless
     /// one was made since (by a mesh adaptation after loading).
+    /// After a resume at time @p t: the loads at @p t.
+    void
+    set_load_time(const double t);
     void
     resume_integrator(const double      tau,
                       const VectorType &flags,
@@ -154,6 +157,7 @@ namespace dyncontact
     begin_step() override;
     const StepReport &
     try_step(const double tau,
+             const double t_end,
              const bool   level_step,
              TimerOutput &timer) override;
     bool
@@ -341,6 +345,8 @@ namespace dyncontact
     std::unique_ptr<ContactSetup<dim>>       contact;
     std::unique_ptr<TimeIntegrator>          integrator;
     bool                                     warned_inertia = false;
+    /// Whether a trial moved the loads to its end (undone by restore()).
+    bool load_stepped = false;
 
     // the state
     VectorType u, udot, u_old, udot_old;

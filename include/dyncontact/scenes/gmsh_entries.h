@@ -5,9 +5,16 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
+
+namespace dealii
+{
+  template <int dim>
+  class FunctionParser;
+}
 
 namespace dyncontact
 {
@@ -41,6 +48,32 @@ namespace dyncontact
     /// for an empty text.
     std::vector<std::string>
     split_items(const std::string &text, const char separator);
+
+    /// The items of @p text between the @p separator outside parentheses
+    /// (so that 'min(t, 1), 0' is two items), trimmed; none for an empty
+    /// text.
+    std::vector<std::string>
+    split_top_level(const std::string &text, const char separator);
+
+    /// Function constants: 'name = value', comma-separated (names of
+    /// letters, digits and '_', not x, y, z, t or body).
+    std::map<std::string, double>
+    parse_constants(const std::string &text);
+
+    /// Whether one of @p expressions uses the variable t.
+    bool
+    mentions_time(const std::vector<std::string> &expressions);
+
+    /// A function parser of @p expressions (one per component) in x, y (,
+    /// z) and, if @p of_time, t, with @p constants; an expression that does
+    /// not parse is refused naming Scene/Gmsh/@p entry, the component and
+    /// muparser's message (with the position).
+    template <int dim>
+    std::shared_ptr<dealii::FunctionParser<dim>>
+    make_function(const std::string                   &entry,
+                  const std::vector<std::string>      &expressions,
+                  const std::map<std::string, double> &constants,
+                  const bool                           of_time);
   } // namespace GmshEntries
 } // namespace dyncontact
 

@@ -84,6 +84,15 @@ namespace dyncontact
     Tensor<1, dim>
     body_force(const unsigned int body) const override;
 
+    /// Body force, Pressures and the tractions of Neumann tractions that
+    /// are functions.
+    FunctionLoads<dim>
+    function_loads() const override;
+
+    /// Prescribed displacements (of Dirichlet tags).
+    std::vector<std::pair<types::boundary_id, Function<dim> *>>
+    prescribed_displacements() const override;
+
     /// Initial displacement function at @p x in @p body (zero without).
     Tensor<1, dim>
     initial_displacement(const Point<dim>  &x,
@@ -132,6 +141,11 @@ namespace dyncontact
     /// function parser per body (the constant 'body' is its number).
     void
     parse_initial_functions(ParameterHandler &prm);
+
+    /// Neumann tractions, Pressures, Body force and Prescribed
+    /// displacements (in gmsh_loads.cc).
+    void
+    parse_loads(ParameterHandler &prm);
     /// @}
 
     /// Binds the faces of each tag of Manifolds (and their edges) to its
@@ -190,8 +204,21 @@ namespace dyncontact
     /// functions of x, y (, z).
     std::vector<std::shared_ptr<FunctionParser<dim>>> displacement_functions;
     std::vector<std::shared_ptr<FunctionParser<dim>>> velocity_functions;
-    Tensor<1, dim>                                    traction;
-    Tensor<1, dim>                                    gravity;
+    /// Per tag: a traction or pressure given by functions (of x, y, z and
+    /// t), and per body (empty: none) the Body force.
+    std::map<unsigned int, std::shared_ptr<FunctionParser<dim>>>
+      traction_functions;
+    std::map<unsigned int, std::shared_ptr<FunctionParser<dim>>>
+                                                      pressure_functions;
+    std::vector<std::shared_ptr<FunctionParser<dim>>> body_force_functions;
+    /// Per Dirichlet tag that moves: its displacement as a function of x
+    /// and t.
+    std::map<unsigned int, std::shared_ptr<FunctionParser<dim>>>
+      prescribed_functions;
+    /// Whether one of these uses t.
+    bool           loads_of_time = false;
+    Tensor<1, dim> traction;
+    Tensor<1, dim> gravity;
   };
 } // namespace dyncontact
 

@@ -1,6 +1,7 @@
 #ifndef dyncontact_scenes_interface_h
 #define dyncontact_scenes_interface_h
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
@@ -71,6 +72,34 @@ namespace dyncontact
     /// Whether the input named this pair's slave (e.g. 'slave : master' in
     /// Scene/Gmsh/Contact pairs): Contact/Slave side may not override it.
     bool own_slave_side = false;
+  };
+
+  /**
+   * Loads given as functions of x (and t, Function::set_time()): a body
+   * force density per body (N/m^3, dim components; nullptr: none), a
+   * traction (Pa, dim components) or a normal pressure (Pa, one component,
+   * positive pushing into the body: the traction -p n) per boundary id.
+   * They add to the constant loads (Scene::body_force(),
+   * neumann_tractions()). With @p time_dependent, the system evaluates
+   * them at every step's end (doc/algorithms.md, "Loads that change in
+   * time"); else once per mesh.
+   */
+  template <int dim>
+  struct FunctionLoads
+  {
+    std::vector<Function<dim> *>                                body_forces;
+    std::vector<std::pair<types::boundary_id, Function<dim> *>> tractions;
+    std::vector<std::pair<types::boundary_id, Function<dim> *>> pressures;
+    bool time_dependent = false;
+
+    bool
+    empty() const
+    {
+      return tractions.empty() && pressures.empty() &&
+             std::none_of(body_forces.begin(),
+                          body_forces.end(),
+                          [](const Function<dim> *f) { return f != nullptr; });
+    }
   };
 
   template <int dim>
@@ -216,6 +245,17 @@ namespace dyncontact
       return {};
     }
 
+    /// Dirichlet boundaries (of dirichlet_boundaries()) whose displacement
+    /// moves: per boundary id the prescribed displacement g(x, t) (m, dim
+    /// components, of which those the boundary fixes are used; a function
+    /// of t through Function::set_time()). A node shared with a boundary
+    /// that holds zero stays at zero. None by default.
+    virtual std::vector<std::pair<types::boundary_id, Function<dim> *>>
+    prescribed_displacements() const
+    {
+      return {};
+    }
+
     /// Constant Neumann tractions (Pa) per boundary id.
     virtual std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
     neumann_tractions() const
@@ -238,6 +278,13 @@ namespace dyncontact
     body_force(const unsigned int /*body*/) const
     {
       return Tensor<1, dim>();
+    }
+
+    /// Loads given as functions (FunctionLoads); none by default.
+    virtual FunctionLoads<dim>
+    function_loads() const
+    {
+      return {};
     }
 
     /// Initial displacement at x in the given body.

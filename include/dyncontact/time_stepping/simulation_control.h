@@ -66,11 +66,15 @@ namespace dyncontact
     virtual void
     begin_step() = 0;
 
-    /// A trial step of length @p tau from the start of the step, timed in
-    /// @p timer; @p level_step: tau is a level of the time step control
-    /// (its step matrix is kept for later steps).
+    /// A trial step of length @p tau from the start of the step to the
+    /// time @p t_end (the loads' time), timed in @p timer; @p level_step:
+    /// tau is a level of the time step control (its step matrix is kept
+    /// for later steps).
     virtual const StepReport &
-    try_step(const double tau, const bool level_step, TimerOutput &timer) = 0;
+    try_step(const double tau,
+             const double t_end,
+             const bool   level_step,
+             TimerOutput &timer) = 0;
 
     /// Whether the trial's displacement and velocity are finite.
     /// Collective.
@@ -336,6 +340,11 @@ namespace dyncontact
     /// estimates allow it.
     StepMoments
     accept();
+
+    /// The time at which a trial of the present tau ends, as accept() will
+    /// count it (End time for the static problem).
+    double
+    end_of_trial() const;
     /// @}
 
     /**

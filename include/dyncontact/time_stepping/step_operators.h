@@ -112,11 +112,11 @@ namespace dyncontact
       return theta;
     }
 
-    /// The load f.
+    /// The load at the step's end, f(t_{n+1}) (the static problem's).
     const VectorType &
     load() const
     {
-      return *system.f;
+      return *system.f_end;
     }
 
     /// r = r(w) for the step from u = u^n.
@@ -135,6 +135,16 @@ namespace dyncontact
     /// sqrt(x^T M x).
     double
     mass_norm(const VectorType &x) const;
+
+    /// With Dirichlet data that move: the force of the prescribed DoFs on
+    /// the body in the last displacement step, (2/tau^2) (S v - r) there
+    /// (the static problem: A v - f), a hanging child's share passed to
+    /// its parents; zero elsewhere. Empty without such data.
+    const VectorType &
+    prescribed_reaction() const
+    {
+      return reaction;
+    }
 
     /// The tolerances of the contact solves.
     const ActiveSetSolver::Parameters &
@@ -235,6 +245,8 @@ namespace dyncontact
       VectorType diagonal;
       /// the matrix-free S x: workspace of (tau^2/4 A + tau/2 B) x
       mutable VectorType stiffness_part;
+      /// y = S x without constraints (matrix-free or by the matrix)
+      Product S_product;
       /// static: A + eps M, an SPD matrix for AMG (A alone may be singular)
       MatrixType                       preconditioner;
       std::unique_ptr<ActiveSetSolver> solver;
@@ -254,6 +266,8 @@ namespace dyncontact
     const AffineConstraints<double>     *mesh_constraints;
     const ActiveSetSolver::NearNullSpace near_null_space;
     const MPI_Comm                       comm;
+    /// (see prescribed_reaction())
+    VectorType reaction;
     /// the step matrices of tau levels, the most recently used last
     std::vector<std::unique_ptr<StepMatrix>> levels;
     /// a shortened step's matrix (not a level)
