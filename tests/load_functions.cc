@@ -131,7 +131,10 @@ main(int argc, char **argv)
     {"    set Pressures = 11: t\n    set Neumann tags = 11\n",
      "tag 11 has a traction already"},
     {"    set Pressures = 10: t\n", "is in Dirichlet tags and carries a load"},
-    {"    set Pressures = 14: t\n", "Scene/Gmsh/Pressures: the mesh file"}};
+    {"    set Pressures = 14: t\n", "Scene/Gmsh/Pressures: the mesh file"},
+    {"    set Pressures = 11:\n", "must be one expression"},
+    {"    set Pressures = 11: pi\n    set Function constants = pi = 3\n",
+     "names a constant 'pi', which is predefined"}};
   for (const auto &[entries, fragment] : cases)
     {
       const std::string message =

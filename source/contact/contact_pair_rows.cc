@@ -75,22 +75,24 @@ namespace dyncontact
     const VectorType                &w_ghosted,
     const AffineConstraints<double> &constraints)
   {
-    // a rigid obstacle: nu = -n, g = (x - x0) . n, no master entries
+    // a rigid obstacle: nu = -n, g of the closest point of its surface
+    // (for a half-space (x - x0) . n), no master entries
     std::string       penetration;
     const std::size_t n_rows_before = rows.size();
     for (const BoundaryNode &node : nodes)
       {
         const Point<dim> &x = node.x;
         ContactRow        row;
-        row.n_components = dim;
-        row.pair         = pair_index;
+        row.n_components         = dim;
+        row.pair                 = pair_index;
+        const auto [gap, normal] = obstacle.gap_and_normal(x);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            row.entries.emplace_back(node.dofs[d], -obstacle.normal[d]);
-            row.normal[d]   = -obstacle.normal[d];
+            row.entries.emplace_back(node.dofs[d], -normal[d]);
+            row.normal[d]   = -normal[d];
             row.position[d] = x[d];
           }
-        row.gap = (x - obstacle.point) * obstacle.normal;
+        row.gap = gap;
         AssertThrow(std::isfinite(row.gap),
                     ExcMessage("The gap of the node at (" +
                                Utilities::to_string(x[0]) + ", " +

@@ -141,6 +141,7 @@ namespace dyncontact
   {
     rows.rows.clear();
     moving_contact_nodes = false;
+    rows_system          = &system;
     unmatched.clear();
     master_surfaces.clear();
     pairs_without_rows.clear();
@@ -159,7 +160,8 @@ namespace dyncontact
       }
     n_bodies = scene.n_bodies();
     side_bodies.clear();
-    several_pairs = pairs.size() + (scene.obstacle() ? 1 : 0) > 1;
+    const auto obstacles = scene.obstacles();
+    several_pairs        = pairs.size() + obstacles.size() > 1;
     // the bodies of the contact boundary ids @p ids, as "1+3", for the
     // banner
     std::vector<std::set<types::boundary_id>> ids_of_bodies;
@@ -179,16 +181,22 @@ namespace dyncontact
           side_bodies.push_back(
             {{bodies_on(pair.first_side), bodies_on(pair.second_side)}});
       }
-    if (const auto obstacle = scene.obstacle())
-      add_obstacle_rows(*obstacle,
-                        pairs.size(),
-                        boundary_nodes(system,
-                                       mapping,
-                                       scene.contact_boundary_ids()),
-                        w_ghosted,
-                        system.get_constraints());
-    const types::global_dof_index n_obstacle_rows =
-      Utilities::MPI::sum<types::global_dof_index>(rows.size(), comm);
+    // each obstacle a pair, numbered after the two-body pairs
+    std::vector<types::global_dof_index> n_obstacle_rows;
+    for (unsigned int k = 0; k < obstacles.size(); ++k)
+      {
+        const std::size_t before = rows.size();
+        add_obstacle_rows(obstacles[k],
+                          pairs.size() + k,
+                          boundary_nodes(system,
+                                         mapping,
+                                         obstacles[k].boundary_ids),
+                          w_ghosted,
+                          system.get_constraints());
+        n_obstacle_rows.push_back(
+          Utilities::MPI::sum<types::global_dof_index>(rows.size() - before,
+                                                       comm));
+      }
     for (unsigned int pair_index = 0; pair_index < pairs.size(); ++pair_index)
       add_pair_rows(scene,
                     pairs[pair_index],
@@ -244,27 +252,30 @@ namespace dyncontact
       }
     else if (several_pairs)
       keep_nearest_rows();
-    if (scene.obstacle() && several_pairs)
-      {
-        unsigned int n_kept = 0;
-        for (const auto &row : rows.rows)
-          n_kept += (row.pair == pairs.size());
-        n_kept = Utilities::MPI::sum(n_kept, comm);
-        pcout << "   contact pair " << pairs.size() + 1 << ": slave body "
-              << bodies_on(scene.contact_boundary_ids()) << " ("
-              << n_obstacle_rows << " nodes";
-        if (n_kept < n_obstacle_rows)
-          pcout << ", " << n_kept << " with obstacle rows, the others "
-                << "nearer to a master of another pair";
-        pcout << "), master the rigid obstacle" << std::endl;
-      }
+    if (several_pairs)
+      for (unsigned int k = 0; k < obstacles.size(); ++k)
+        {
+          unsigned int n_kept = 0;
+          for (const auto &row : rows.rows)
+            n_kept += (row.pair == pairs.size() + k);
+          n_kept = Utilities::MPI::sum(n_kept, comm);
+          pcout << "   contact pair " << pairs.size() + k + 1 << ": slave body "
+                << bodies_on(obstacles[k].boundary_ids) << " ("
+                << n_obstacle_rows[k] << " nodes";
+          if (n_kept < n_obstacle_rows[k])
+            pcout << ", " << n_kept << " with obstacle rows, the others "
+                  << "nearer to a master of another pair";
+          pcout << "), master the rigid obstacle"
+                << (obstacles.size() > 1 ? " " + std::to_string(k + 1) : "")
+                << std::endl;
+        }
 
     // the penetration check of the slave nodes without a row keeps this
     // rank's master faces, but only if there are such nodes
     n_unmatched_nodes =
       Utilities::MPI::sum<types::global_dof_index>(unmatched.size(), comm);
-    obstacle_plane = scene.obstacle();
-    n_unmatched_in_pair.assign(pairs.size() + 1, 0);
+    rigid_obstacles = obstacles;
+    n_unmatched_in_pair.assign(pairs.size() + obstacles.size(), 0);
     for (const auto &node : unmatched)
       ++n_unmatched_in_pair[node.pair];
     Utilities::MPI::sum(n_unmatched_in_pair, comm, n_unmatched_in_pair);
@@ -387,7 +398,14 @@ namespace dyncontact
     // row for a node without one (a hanging node, or a node fixed by
     // Dirichlet data)
     row.weight = w_ghosted(row.entries[0].first);
-    int best   = -1;
+    // (a slave node that moves with prescribed data along the row's
+    // normal: refused in setup(), whether it gets a row or not)
+    if (rows_system != nullptr && rows_system->has_prescribed_motion())
+      for (unsigned int d = 0; d < dim; ++d)
+        if (std::abs(row.normal[d]) > 1e-12 &&
+            rows_system->is_prescribed(row.entries[d].first))
+          moving_contact_nodes = true;
+    int best = -1;
     for (unsigned int d = 0; d < dim; ++d)
       if (!constraints.is_constrained(row.entries[d].first) &&
           std::abs(row.normal[d]) > 1e-12 &&

@@ -62,27 +62,26 @@ namespace dyncontact
                 }
             }
       }
-    // nodes that kept the row of a master nearer than the obstacle
-    // (the obstacle's pair index: the number of two-body pairs)
-    const unsigned int obstacle_pair = search_radii.size();
-    if (obstacle_plane && n_unmatched_in_pair[obstacle_pair] > 0)
-      for (const auto &node : unmatched)
-        if (node.pair == obstacle_pair)
-          {
-            Point<dim> y = node.x;
-            for (unsigned int d = 0; d < dim; ++d)
-              y[d] += ghosted(node.dofs[d]);
-            const double depth =
-              -((y - obstacle_plane->point) * obstacle_plane->normal);
-            // (round-off of a node on the surface is no penetration)
-            if (depth > deepest.depth && depth > 1e-12 * (1. + y.norm()))
-              {
-                deepest.depth         = depth;
-                deepest.position      = node.x;
-                deepest.pair          = node.pair;
-                deepest.nearer_master = node.nearer_master;
-              }
-          }
+    // nodes that kept the row of a master nearer than an obstacle (the
+    // obstacles' pair indices follow the two-body pairs)
+    for (unsigned int k = 0; k < rigid_obstacles.size(); ++k)
+      if (n_unmatched_in_pair[search_radii.size() + k] > 0)
+        for (const auto &node : unmatched)
+          if (node.pair == search_radii.size() + k)
+            {
+              Point<dim> y = node.x;
+              for (unsigned int d = 0; d < dim; ++d)
+                y[d] += ghosted(node.dofs[d]);
+              const double depth = -rigid_obstacles[k].gap_and_normal(y).first;
+              // (round-off of a node on the surface is no penetration)
+              if (depth > deepest.depth && depth > 1e-12 * (1. + y.norm()))
+                {
+                  deepest.depth         = depth;
+                  deepest.position      = node.x;
+                  deepest.pair          = node.pair;
+                  deepest.nearer_master = node.nearer_master;
+                }
+            }
     // the deepest over all ranks, with its position
     std::vector<double> position(dim + 2, 0.);
     for (unsigned int d = 0; d < dim; ++d)

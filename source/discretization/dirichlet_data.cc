@@ -1,11 +1,14 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 
 // The constraints of the mesh (hanging nodes, Dirichlet data) and the
 // Dirichlet data that move: which DoFs they prescribe, and their values at
@@ -159,9 +162,14 @@ namespace dyncontact
   template <int dim>
   void
   SemiDiscreteSystem<dim>::prescribed_values(const double t,
-                                             VectorType  &G) const
+                                             VectorType  &G,
+                                             const bool   finite) const
   {
     reinit_vector(G);
+    std::string problem;
+    // (a node shared by two boundaries that move follows the first, the
+    // lowest tag, which constrained it)
+    std::vector<bool> set(prescribed->dofs.size(), false);
     for (const MovingBoundary &boundary : moving_boundaries)
       {
         boundary.function->set_time(t);
@@ -174,12 +182,34 @@ namespace dyncontact
                                                  ComponentMask(
                                                    boundary.components));
         for (const auto &[dof, value] : values)
-          if (locally_owned.is_element(dof) &&
-              std::binary_search(prescribed->dofs.begin(),
-                                 prescribed->dofs.end(),
-                                 dof))
-            G(dof) = value;
+          if (locally_owned.is_element(dof))
+            {
+              const auto at = std::lower_bound(prescribed->dofs.begin(),
+                                               prescribed->dofs.end(),
+                                               dof);
+              if (at == prescribed->dofs.end() || *at != dof ||
+                  set[at - prescribed->dofs.begin()])
+                continue;
+              set[at - prescribed->dofs.begin()] = true;
+              G(dof)                             = value;
+              if (finite && problem.empty() && !(std::abs(value) <= 1e15))
+                {
+                  std::ostringstream text;
+                  text << "The prescribed displacement of tag " << boundary.id
+                       << " is " << value
+                       << " m (not finite, or beyond 1e15 in magnitude) at "
+                          "t = "
+                       << t
+                       << " s. Check its expression "
+                          "(Scene/Gmsh/Prescribed displacements; the "
+                          "velocity of the moving nodes takes it also a "
+                          "thousandth of the time step around t, or after t "
+                          "where it is not finite before).";
+                  problem = text.str();
+                }
+            }
       }
+    stop_with_any_message(problem, comm);
     G.compress(VectorOperation::insert);
     set_children(G);
   }
@@ -214,12 +244,26 @@ namespace dyncontact
     if (udot != nullptr)
       {
         AssertThrow(prescribed_delta > 0., ExcInternalError());
-        VectorType later, earlier;
-        prescribed_values(t + prescribed_delta, later);
-        prescribed_values(t - prescribed_delta, earlier);
-        later -= earlier;
-        later /= 2. * prescribed_delta;
-        set(later, *udot);
+        // central differences, or where g is not finite before t (defined
+        // for t >= 0 only) one-sided of second order
+        VectorType rate, other;
+        prescribed_values(t - prescribed_delta, other, false);
+        if (std::isfinite(other.l2_norm()))
+          {
+            prescribed_values(t + prescribed_delta, rate);
+            rate -= other;
+          }
+        else
+          {
+            prescribed_values(t + prescribed_delta, rate);
+            rate *= 4.;
+            prescribed_values(t, other);
+            rate.add(-3., other);
+            prescribed_values(t + 2. * prescribed_delta, other);
+            rate -= other;
+          }
+        rate /= 2. * prescribed_delta;
+        set(rate, *udot);
       }
   }
 
@@ -231,8 +275,8 @@ namespace dyncontact
     const types::global_dof_index) const;                                      \
   template void SemiDiscreteSystem<dim>::set_children(VectorType &) const;     \
   template void SemiDiscreteSystem<dim>::prescribed_values(const double,       \
-                                                           VectorType &)       \
-    const;                                                                     \
+                                                           VectorType &,       \
+                                                           const bool) const;  \
   template void SemiDiscreteSystem<dim>::set_prescribed_state(const double,    \
                                                               const double,    \
                                                               VectorType &,    \

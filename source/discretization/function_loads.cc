@@ -1,9 +1,12 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <dyncontact/base/collective_errors.h>
 #include <dyncontact/discretization/cell_assembly.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 
+#include <cmath>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -49,6 +52,26 @@ namespace dyncontact
                                          Vector<double>(dim));
     std::vector<double>                  pressure(face_quadrature.size());
 
+    // the first value on this rank that is not finite or beyond 1e15
+    std::string problem;
+    // (@p what and @p number name the load, only when it fails)
+    const auto check = [&](const double       value,
+                           const Point<dim>  &x,
+                           const char        *what,
+                           const unsigned int number) {
+      if (problem.empty() && !(std::abs(value) <= 1e15))
+        {
+          std::ostringstream text;
+          text << "A load given as a function is " << value << " (not "
+               << "finite, or beyond 1e15 in magnitude) at t = " << t
+               << " s: " << what << number << " at (" << x[0];
+          for (unsigned int d = 1; d < dim; ++d)
+            text << ", " << x[d];
+          text << "). Check its expression (Scene/Gmsh/Body force, "
+                  "Pressures or Neumann tractions).";
+          problem = text.str();
+        }
+    };
     VectorType function_part;
     reinit_vector(function_part);
     {
@@ -68,6 +91,12 @@ namespace dyncontact
                 force->vector_value_list(values.get_quadrature_points(),
                                          body_force);
                 for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    check(body_force[q][d],
+                          values.quadrature_point(q),
+                          "the body force of body ",
+                          cell->material_id() + 1);
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
                     cell_load(i) += values.shape_value(node[i], q) *
                                     body_force[q][component[i]] * values.JxW(q);
@@ -86,6 +115,13 @@ namespace dyncontact
                           face_values.get_quadrature_points(), traction);
                         for (unsigned int q = 0; q < face_quadrature.size();
                              ++q)
+                          for (unsigned int d = 0; d < dim; ++d)
+                            check(traction[q][d],
+                                  face_values.quadrature_point(q),
+                                  "the traction of tag ",
+                                  id);
+                        for (unsigned int q = 0; q < face_quadrature.size();
+                             ++q)
                           for (unsigned int i = 0; i < dofs_per_cell; ++i)
                             cell_load(i) +=
                               face_values.shape_value(node[i], q) *
@@ -100,6 +136,12 @@ namespace dyncontact
                         face_values.reinit(cell, face);
                         function->value_list(
                           face_values.get_quadrature_points(), pressure);
+                        for (unsigned int q = 0; q < face_quadrature.size();
+                             ++q)
+                          check(pressure[q],
+                                face_values.quadrature_point(q),
+                                "the pressure of tag ",
+                                id);
                         for (unsigned int q = 0; q < face_quadrature.size();
                              ++q)
                           for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -119,6 +161,7 @@ namespace dyncontact
           }
     }
     function_part.compress(VectorOperation::add);
+    stop_with_any_message(problem, comm);
     f = constant_load;
     f += function_part;
   }

@@ -41,18 +41,24 @@ namespace dyncontact
     text << ")\n   contact: ";
     if (!scene.has_contact())
       text << "none (no rows, no contact search)";
-    else if (const std::size_t n_pairs = scene.contact_pairs().size();
+    else if (const std::size_t n_pairs = scene.contact_pairs().size(),
+             n_obstacles               = scene.obstacles().size();
              n_pairs == 0)
-      text << "rigid obstacle (no contact search), " << contact.n_global_rows()
-           << " rows";
-    else if (n_pairs == 1 && !scene.obstacle())
+      text << (n_obstacles == 1 ?
+                 std::string("rigid obstacle") :
+                 std::to_string(n_obstacles) + " rigid obstacles")
+           << " (no contact search), " << contact.n_global_rows() << " rows";
+    else if (n_pairs == 1 && n_obstacles == 0)
       text << "two bodies through phi_h, " << contact.n_global_rows()
            << " rows on the slave side";
     else
       text << n_pairs << " pair" << (n_pairs > 1 ? "s" : "")
            << " of bodies through phi_h"
-           << (scene.obstacle() ? " and a rigid obstacle" : "") << ", "
-           << contact.n_global_rows() << " rows";
+           << (n_obstacles == 1 ? " and a rigid obstacle" :
+               n_obstacles > 1  ? " and " + std::to_string(n_obstacles) +
+                                   " rigid obstacles" :
+                                 "")
+           << ", " << contact.n_global_rows() << " rows";
     text << "\n   material: "
          << (system.is_viscous() ?
                "viscoelastic (Kelvin-Voigt, viscous form B)" :

@@ -159,14 +159,14 @@ namespace dyncontact
             const unsigned int n_pairs =
               this->get_scene().contact_pairs().size();
             const std::string pair =
-              n_pairs + (this->get_scene().obstacle() ? 1 : 0) > 1 ?
+              n_pairs + this->get_scene().obstacles().size() > 1 ?
                 " of contact pair " + std::to_string(unmatched.pair + 1) :
                 std::string();
             std::ostringstream text;
             text << std::setprecision(3) << "the slave node at "
                  << point_text(unmatched.position) << " has no constraint row"
                  << pair << " and lies " << unmatched.depth << " m inside "
-                 << (unmatched.pair >= n_pairs ? "the rigid obstacle" :
+                 << (unmatched.pair >= n_pairs ? "a rigid obstacle" :
                                                  "the other body");
             if (unmatched.nearer_master)
               text << ": it kept the row of a master of another pair, "
@@ -270,11 +270,7 @@ namespace dyncontact
         for (unsigned int k = 1; k <= n_pairs(); ++k)
           {
             const std::string pair = "pair" + std::to_string(k);
-            out << "pair " << k
-                << (k > this->get_scene().contact_pairs().size() ?
-                      " (rigid obstacle)" :
-                      "")
-                << ": ";
+            out << "pair " << k << obstacle_name(k) << ": ";
             if (input.is_static)
               {
                 const unsigned int last = s.rows.size() - 1;
@@ -351,12 +347,28 @@ namespace dyncontact
       }
 
     private:
-      /// The two-body pairs and the obstacle.
+      /// " (rigid obstacle)" for pair @p k (from 1) if it is one, with
+      /// its number among several; "" for a pair of two bodies.
+      std::string
+      obstacle_name(const unsigned int k) const
+      {
+        const unsigned int n_two_body =
+          this->get_scene().contact_pairs().size();
+        if (k <= n_two_body)
+          return "";
+        return " (rigid obstacle" +
+               (n_pairs() - n_two_body > 1 ?
+                  " " + std::to_string(k - n_two_body) :
+                  std::string()) +
+               ")";
+      }
+
+      /// The two-body pairs and the obstacles.
       unsigned int
       n_pairs() const
       {
         return this->get_scene().contact_pairs().size() +
-               (this->get_scene().obstacle() ? 1 : 0);
+               this->get_scene().obstacles().size();
       }
     };
 

@@ -49,6 +49,10 @@ namespace dyncontact
                                  "' is no 'name = value' with a name of "
                                  "letters, digits and '_' and a finite "
                                  "decimal value."));
+          AssertThrow(name != "pi",
+                      ExcMessage("Scene/Gmsh/Function constants: '" + item +
+                                 "' names a constant 'pi', which is "
+                                 "predefined (3.14159...)."));
           for (const std::string reserved : {"x", "y", "z", "t", "body"})
             AssertThrow(name != reserved,
                         ExcMessage("Scene/Gmsh/Function constants: '" + item +
@@ -113,8 +117,8 @@ namespace dyncontact
                   const std::map<std::string, double> &constants,
                   const bool                           of_time)
     {
-      // (pi as in deal.II's ParsedFunction, unless Function constants
-      // gives it)
+      // (pi as in deal.II's ParsedFunction; Function constants may not
+      // name it)
       std::map<std::string, double> with_pi = constants;
       with_pi.emplace("pi", numbers::PI);
       std::string variables = FunctionParser<dim>::default_variable_names();

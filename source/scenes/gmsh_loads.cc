@@ -126,10 +126,10 @@ namespace dyncontact
     for (const auto &[tag, components] : load_items("Pressures"))
       {
         const std::string entry = "Pressures (tag " + std::to_string(tag) + ")";
-        AssertThrow(components.size() == 1,
+        AssertThrow(components.size() == 1 && !components[0].empty(),
                     ExcMessage("Scene/Gmsh/" + entry +
-                               " has more than one component: a pressure is "
-                               "a scalar (Pa)."));
+                               " must be one expression: a pressure is a "
+                               "scalar (Pa)."));
         const bool of_time = mentions_time(components);
         pressure_functions[tag] =
           make_function<dim>(entry, components, constants, of_time);

@@ -55,20 +55,41 @@ namespace dyncontact
     const std::string  list = prm.get("Contact pairs");
     const std::string  form =
       "' is no pair 'slave : master' of body numbers (the master can be "
-      "'obstacle'), or 'slave : master : search radius'; a body may name "
+      "'obstacle', or 'obstacle k' for the k-th of Obstacles), or 'slave : "
+      "master : search radius'; a body may name "
       "the contact tags the pair uses in parentheses, e.g. '2 (12) : 1 "
       "(11, 13)'.";
     for (const std::string &item : split_pair_list(list))
       {
         const auto sides = split_items(item, ':');
-        AssertThrow(sides.size() < 2 || sides[0] != "obstacle",
+        AssertThrow(sides.size() < 2 || sides[0].rfind("obstacle", 0) != 0,
                     ExcMessage("Scene/Gmsh/Contact pairs: the pair '" + item +
                                "' makes the rigid obstacle the slave; it "
                                "can only be the master (write 'body : "
                                "obstacle')."));
         AssertThrow(sides.size() == 2 || sides.size() == 3,
                     ExcMessage("Scene/Gmsh/Contact pairs: '" + item + form));
-        const bool with_obstacle = sides[1] == "obstacle";
+        // 'obstacle' or 'obstacle k': the index of the obstacle
+        const bool   with_obstacle = sides[1].rfind("obstacle", 0) == 0;
+        unsigned int obstacle      = 0;
+        if (with_obstacle)
+          {
+            const std::string number = Utilities::trim(sides[1].substr(8));
+            char             *end    = nullptr;
+            const long        k      = std::strtol(number.c_str(), &end, 10);
+            AssertThrow(number.empty() || (*end == '\0' && k >= 1 && k <= 1000),
+                        ExcMessage("Scene/Gmsh/Contact pairs: '" + item +
+                                   form));
+            if (number.empty())
+              unnumbered_obstacle = true;
+            else
+              obstacle = k - 1;
+            if (obstacle_slaves.size() <= obstacle)
+              {
+                obstacle_slaves.resize(obstacle + 1);
+                obstacle_tags.resize(obstacle + 1);
+              }
+          }
         // each side: a body number, and the tags in parentheses, if any
         std::array<long, 2>                   body{{0, 0}};
         std::array<std::set<unsigned int>, 2> named;
@@ -169,13 +190,13 @@ namespace dyncontact
           {
             bool added = false;
             for (const auto tag : tags[0])
-              added = obstacle_tags.insert(tag).second || added;
+              added = obstacle_tags[obstacle].insert(tag).second || added;
             AssertThrow(added,
                         ExcMessage("Scene/Gmsh/Contact pairs: the pair '" +
                                    item +
                                    "' is listed twice (its tags already meet "
                                    "the obstacle)."));
-            obstacle_slaves.insert(slave);
+            obstacle_slaves[obstacle].insert(slave);
           }
         else
           {

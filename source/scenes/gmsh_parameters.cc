@@ -141,9 +141,10 @@ namespace dyncontact
                       "that finds a master surface in two pairs keeps the "
                       "row of the nearer. The master can be 'obstacle', the "
                       "rigid obstacle of Obstacle point and Obstacle normal "
-                      "(e.g. '1 : obstacle, 2 : 1'; it is one pair for all "
+                      "(e.g. '1 : obstacle, 2 : 1'), or 'obstacle k', the "
+                      "k-th of Obstacles; an obstacle is one pair for all "
                       "bodies it names, numbered after the pairs of two "
-                      "bodies in the statistics). A pair of two bodies can "
+                      "bodies in the statistics. A pair of two bodies can "
                       "have its own search radius in m, in (0, 1e15], "
                       "as a third item (e.g. '2 : 1 : 0.01'), which "
                       "Contact/Search radius does not override.");
@@ -161,6 +162,19 @@ namespace dyncontact
                       "obstacle's surface, pointing out of the obstacle "
                       "into free space (any length > 0; it is normalised), "
                       "components comma-separated; empty: no obstacle.");
+    prm.declare_entry(
+      "Obstacles",
+      "",
+      Patterns::Anything(),
+      "Rigid obstacles, instead of Obstacle point and Obstacle normal, items "
+      "separated by ';', the k-th named 'obstacle k' in Contact pairs: "
+      "'plane x, y[, z] normal a, b[, c]' (the half-space behind the point, "
+      "m, with the outward normal), 'sphere x, y[, z] radius r' (a ball, in "
+      "2D a disc: centre and radius, m) or 'cylinder x, y, z axis a, b, c "
+      "radius r' (3D: a solid cylinder about the axis through the point), "
+      "e.g. 'plane 0, 0 normal 1, 1; plane 0, 0 normal -1, 1' (a "
+      "V-groove). A slave node gets the constraint of the obstacle's "
+      "surface nearest to it at t = 0, linearised there.");
     prm.declare_entry(
       "Initial displacement",
       "",
@@ -290,7 +304,9 @@ namespace dyncontact
     pairs.clear();
     obstacle_slaves.clear();
     obstacle_tags.clear();
-    pairs_listed = !bodies.empty();
+    rigid_obstacles.clear();
+    unnumbered_obstacle = false;
+    pairs_listed        = !bodies.empty();
     if (bodies.empty())
       parse_two_bodies(prm);
     else
@@ -358,7 +374,8 @@ namespace dyncontact
                 ExcMessage("Scene/Gmsh: contact needs two bodies, and "
                            "contact tags on both (Contact tags of body 1 "
                            "and 2)."));
-    for (const std::string entry : {"Obstacle point", "Obstacle normal"})
+    for (const std::string entry :
+         {"Obstacle point", "Obstacle normal", "Obstacles"})
       AssertThrow(prm.get(entry).empty(),
                   ExcMessage("Scene/Gmsh/" + entry +
                              " needs Scene/Gmsh/Bodies and a pair 'body : "
@@ -446,47 +463,6 @@ namespace dyncontact
 
   template <int dim>
   void
-  GmshScene<dim>::parse_obstacle(ParameterHandler &prm)
-  {
-    // the rigid obstacle
-    const std::string point  = prm.get("Obstacle point");
-    const std::string normal = prm.get("Obstacle normal");
-    AssertThrow(!obstacle_slaves.empty() || (point.empty() && normal.empty()),
-                ExcMessage("Scene/Gmsh/Obstacle point or Obstacle normal is "
-                           "given, but no pair of Scene/Gmsh/Contact pairs "
-                           "names the obstacle ('body : obstacle'): name it, "
-                           "or leave them out."));
-    AssertThrow(obstacle_slaves.empty() || (!point.empty() && !normal.empty()),
-                ExcMessage("Scene/Gmsh/Contact pairs names the rigid obstacle: "
-                           "give both Scene/Gmsh/Obstacle point and "
-                           "Scene/Gmsh/Obstacle normal."));
-    if (!obstacle_slaves.empty())
-      {
-        rigid_obstacle.point =
-          Point<dim>(parse_vector<dim>(point, "Obstacle point", 1e15, "m"));
-        rigid_obstacle.normal =
-          parse_vector<dim>(normal, "Obstacle normal", 1e15, "");
-        // (scaled first: the square of a tiny component underflows)
-        double largest = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          largest = std::max(largest, std::abs(rigid_obstacle.normal[d]));
-        AssertThrow(largest > 0.,
-                    ExcMessage("Scene/Gmsh/Obstacle normal = '" + normal +
-                               "' must have a length > 0."));
-        // (component by component: Tensor's /= multiplies by the
-        // reciprocal, which is infinite for a subnormal largest)
-        for (unsigned int d = 0; d < dim; ++d)
-          rigid_obstacle.normal[d] = rigid_obstacle.normal[d] / largest;
-        const double length = rigid_obstacle.normal.norm();
-        for (unsigned int d = 0; d < dim; ++d)
-          rigid_obstacle.normal[d] = rigid_obstacle.normal[d] / length;
-      }
-  }
-
-
-
-  template <int dim>
-  void
   GmshScene<dim>::refuse_unpaired_contact_tags() const
   {
     const unsigned int n = body_tags.size();
@@ -495,8 +471,10 @@ namespace dyncontact
     for (unsigned int b = 0; b < n; ++b)
       for (const auto tag : contact_tags[b])
         {
-          bool paired =
-            obstacle_slaves.count(b) > 0 && obstacle_tags.count(tag);
+          bool paired = false;
+          for (unsigned int k = 0; k < obstacle_slaves.size(); ++k)
+            paired = paired || (obstacle_slaves[k].count(b) > 0 &&
+                                obstacle_tags[k].count(tag));
           for (const BodyPair &pair : pairs)
             for (const auto &[body, tags] :
                  {std::make_pair(pair.slave, &pair.slave_tags),
@@ -526,7 +504,6 @@ namespace dyncontact
   template void GmshScene<dim>::parse_two_bodies(ParameterHandler &);   \
   template void GmshScene<dim>::parse_body_list(ParameterHandler &,     \
                                                 const std::string &);   \
-  template void GmshScene<dim>::parse_obstacle(ParameterHandler &);     \
   template void GmshScene<dim>::refuse_unpaired_contact_tags() const;
   DYNCONTACT_INSTANTIATE(2)
   DYNCONTACT_INSTANTIATE(3)

@@ -377,18 +377,10 @@ namespace dyncontact
   std::vector<types::boundary_id>
   GmshScene<dim>::contact_boundary_ids() const
   {
-    return {obstacle_tags.begin(), obstacle_tags.end()};
-  }
-
-
-
-  template <int dim>
-  std::optional<RigidObstacle<dim>>
-  GmshScene<dim>::obstacle() const
-  {
-    if (obstacle_slaves.empty())
-      return {};
-    return rigid_obstacle;
+    std::set<types::boundary_id> ids;
+    for (const auto &tags : obstacle_tags)
+      ids.insert(tags.begin(), tags.end());
+    return {ids.begin(), ids.end()};
   }
 
 

@@ -33,6 +33,10 @@ namespace dyncontact
   Scene<dim>::all_contact_boundary_ids() const
   {
     std::vector<types::boundary_id> ids = contact_boundary_ids();
+    for (const auto &obstacle : obstacles())
+      ids.insert(ids.end(),
+                 obstacle.boundary_ids.begin(),
+                 obstacle.boundary_ids.end());
     for (const auto &pair : contact_pairs())
       {
         ids.insert(ids.end(), pair.first_side.begin(), pair.first_side.end());
@@ -47,7 +51,7 @@ namespace dyncontact
   bool
   Scene<dim>::has_contact() const
   {
-    return obstacle().has_value() || !contact_pairs().empty();
+    return !obstacles().empty() || !contact_pairs().empty();
   }
 
 

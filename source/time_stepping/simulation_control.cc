@@ -31,6 +31,8 @@ namespace dyncontact
                 ExcMessage("Time integration/End time must be a finite "
                            "number >= 0 (s); got " +
                            format_number(end_time) + "."));
+    // (the static problem's loads that are functions of t: at End time)
+    static_load_time = end_time;
     if (static_problem)
       // no time: its one state is that of load factor 1 (the unloaded
       // initial state is at 0)
@@ -198,7 +200,7 @@ namespace dyncontact
   {
     // (as accept() counts it: from t_base, or from t_n if tau changed)
     if (is_static)
-      return end_time;
+      return static_load_time;
     return tau_changed ? time + tau : time_base + (steps_since + 1) * tau;
   }
 
@@ -232,7 +234,7 @@ namespace dyncontact
       }
     ++steps_since;
     time = is_static ? end_time : time_base + steps_since * step_tau;
-    Assert(time == new_time, ExcInternalError());
+    Assert(is_static || time == new_time, ExcInternalError());
 
     // the last step is an output too, but the next output time moves on
     // only when it is reached (a resumed run writes the same outputs)

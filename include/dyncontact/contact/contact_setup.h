@@ -290,8 +290,8 @@ namespace dyncontact
     types::global_dof_index    n_global_row_count = 0;
     std::vector<UnmatchedNode> unmatched;
     types::global_dof_index    n_unmatched_nodes = 0;
-    /// The rigid obstacle, if the scene has one.
-    std::optional<RigidObstacle<dim>> obstacle_plane;
+    /// The rigid obstacles, pairs numbered after the two-body pairs.
+    std::vector<RigidObstacle<dim>> rigid_obstacles;
     /// Per pair (kept only if a slave node has no row): this rank's faces
     /// of the master surface, and the number of nodes without a row over
     /// all ranks (the last entry: the obstacle's, nodes that kept the row
@@ -311,10 +311,12 @@ namespace dyncontact
     bool several_pairs = false;
     /// Whether local_faces() met a node that moves with prescribed data
     /// along its face's normal.
-    mutable bool       moving_contact_nodes = false;
-    IndexSet           locally_owned;
-    IndexSet           locally_relevant;
-    ContactRowOperator row_operator;
+    mutable bool moving_contact_nodes = false;
+    /// The system of the rows being set up (in setup()).
+    const SemiDiscreteSystem<dim> *rows_system = nullptr;
+    IndexSet                       locally_owned;
+    IndexSet                       locally_relevant;
+    ContactRowOperator             row_operator;
     /// Per pair: the slave side (0, 1) of the last set-up, and those kept by
     /// keep_slave_sides() (empty: chosen anew at each set-up).
     std::vector<unsigned int> slave_sides;

@@ -487,9 +487,12 @@ namespace dyncontact
     void
     make_constraints(const Scene<dim> &scene);
     /// @p G = the prescribed values at @p t on the prescribed DoFs and
-    /// their children, zero elsewhere (collective).
+    /// their children, zero elsewhere (collective); a value that is not
+    /// finite or beyond 1e15 stops the run if @p finite.
     void
-    prescribed_values(const double t, VectorType &G) const;
+    prescribed_values(const double t,
+                      VectorType  &G,
+                      const bool   finite = true) const;
     /// Sets the children of the prescribed DoFs in @p G from their parents
     /// (collective).
     void

@@ -26,8 +26,9 @@ namespace dyncontact
    * boundaries. Bodies must not share vertices. Two bodies can be given by
    * 'Body 1 tags' and 'Body 2 tags' (one contact pair); any number by
    * 'Bodies', with 'Contact tags', 'Initial velocities' and a list of
-   * 'Contact pairs' (slave : master, body numbers, a master can be the
-   * rigid obstacle, a half-space; a pair can have its own search radius).
+   * 'Contact pairs' (slave : master, body numbers, a master can be a
+   * rigid obstacle, a half-space, a ball or a cylinder; a pair can have its
+   * own search radius).
    * The mesh is checked against the prm: every cell must belong to a body,
    * every tag named in the prm must exist in the mesh, otherwise the run
    * stops with a message.
@@ -66,14 +67,14 @@ namespace dyncontact
     std::vector<ContactPair>
     contact_pairs() const override;
 
-    /// The contact tags of the bodies paired with the obstacle.
+    /// The contact tags of the bodies paired with an obstacle.
     std::vector<types::boundary_id>
     contact_boundary_ids() const override;
 
-    /// The half-space of Obstacle point and Obstacle normal, if a pair
-    /// names it.
-    std::optional<RigidObstacle<dim>>
-    obstacle() const override;
+    /// The half-space of Obstacle point and Obstacle normal, or those of
+    /// Obstacles, each with the tags that meet it.
+    std::vector<RigidObstacle<dim>>
+    obstacles() const override;
 
     std::vector<DirichletBoundary>
     dirichlet_boundaries() const override;
@@ -125,7 +126,8 @@ namespace dyncontact
     void
     parse_contact_pairs(ParameterHandler &prm);
 
-    /// Obstacle point and Obstacle normal (with a pair 'body : obstacle').
+    /// Obstacles, or Obstacle point and Obstacle normal (with pairs 'body :
+    /// obstacle [k]'; in gmsh_obstacles.cc).
     void
     parse_obstacle(ParameterHandler &prm);
 
@@ -180,11 +182,13 @@ namespace dyncontact
     /// Whether the pairs were listed in Contact pairs (they then name the
     /// slave).
     bool pairs_listed = false;
-    /// The bodies paired with the rigid obstacle, their tags that meet it,
-    /// and the obstacle.
-    std::set<unsigned int>       obstacle_slaves;
-    std::set<types::boundary_id> obstacle_tags;
-    RigidObstacle<dim>           rigid_obstacle;
+    /// Per rigid obstacle (numbered from 0): the bodies paired with it,
+    /// their tags that meet it, and the obstacle; whether a pair names
+    /// 'obstacle' without a number.
+    std::vector<std::set<unsigned int>>       obstacle_slaves;
+    std::vector<std::set<types::boundary_id>> obstacle_tags;
+    std::vector<RigidObstacle<dim>>           rigid_obstacles;
+    bool                                      unnumbered_obstacle = false;
     /// The Dirichlet tags, each with the displacement components it fixes.
     std::map<unsigned int, std::array<bool, 3>> dirichlet_components;
     std::set<unsigned int>                      neumann_tags;

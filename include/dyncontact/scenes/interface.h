@@ -31,15 +31,44 @@ namespace dyncontact
 
   /**
    * A rigid obstacle: the half-space {x : (x - point) . normal <= 0}, with
-   * @p normal the unit normal pointing out of the obstacle into free space.
-   * For a slave node x_p it gives nu_p = -normal and g_p = (x_p - point) .
-   * normal (the paper's eqs. 2-3 with phi(x) the closest obstacle point).
+   * @p normal the unit normal pointing out of the obstacle into free space;
+   * or a ball (in 2D a disc) of centre @p point and radius @p radius; or
+   * (3D) a solid cylinder of radius @p radius about the axis through
+   * @p point along the unit vector @p normal. For a slave node x_p it gives
+   * the outward normal n and the gap g of the obstacle's surface at its
+   * point closest to x_p, nu_p = -n and g_p (the paper's eqs. 2-3, the
+   * constraint linearised at the reference position).
    */
   template <int dim>
   struct RigidObstacle
   {
+    enum class Shape
+    {
+      half_space,
+      ball,
+      cylinder
+    };
+    Shape          shape = Shape::half_space;
     Point<dim>     point;
     Tensor<1, dim> normal;
+    double         radius = 0.;
+    /// The boundary ids that meet it; empty: Scene::contact_boundary_ids().
+    std::vector<types::boundary_id> boundary_ids;
+
+    /// The gap of @p x (negative inside) and the outward unit normal of
+    /// the surface at its point closest to @p x (zero on a ball's centre or
+    /// a cylinder's axis, where it has none).
+    std::pair<double, Tensor<1, dim>>
+    gap_and_normal(const Point<dim> &x) const
+    {
+      if (shape == Shape::half_space)
+        return {(x - point) * normal, normal};
+      Tensor<1, dim> d = x - point;
+      if (shape == Shape::cylinder)
+        d -= (d * normal) * normal;
+      const double r = d.norm();
+      return {r - radius, r > 0. ? Tensor<1, dim>(d / r) : Tensor<1, dim>()};
+    }
   };
 
   /// Homogeneous Dirichlet data on one boundary id, for some components.
@@ -298,11 +327,28 @@ namespace dyncontact
     virtual Tensor<1, dim>
     initial_velocity(const Point<dim> &x, const unsigned int body) const = 0;
 
-    /// The rigid obstacle, if the scene has one.
+    /// The rigid obstacle, if the scene has one (a scene with several
+    /// overrides obstacles() instead).
     virtual std::optional<RigidObstacle<dim>>
     obstacle() const
     {
       return {};
+    }
+
+    /// The rigid obstacles, each a contact pair of its own (numbered after
+    /// the two-body pairs), with the boundary ids that meet it: by default
+    /// obstacle(), met by contact_boundary_ids().
+    virtual std::vector<RigidObstacle<dim>>
+    obstacles() const
+    {
+      std::vector<RigidObstacle<dim>> list;
+      if (const auto one = obstacle())
+        {
+          list.push_back(*one);
+          if (list[0].boundary_ids.empty())
+            list[0].boundary_ids = contact_boundary_ids();
+        }
+      return list;
     }
 
     virtual bool

@@ -342,7 +342,8 @@ namespace dyncontact
     accept();
 
     /// The time at which a trial of the present tau ends, as accept() will
-    /// count it (End time for the static problem).
+    /// count it; for the static problem (whose one state has the time 1,
+    /// its load factor) Time integration/End time, the time of its loads.
     double
     end_of_trial() const;
     /// @}
@@ -432,11 +433,14 @@ namespace dyncontact
     std::vector<std::pair<double, bool>> stop_intervals;
 
     // state of the time
-    unsigned int step        = 0;
-    double       time        = 0.;
-    double       time_base   = 0.;
-    unsigned int steps_since = 0;
-    double       next_output = 0.05;
+    unsigned int step      = 0;
+    double       time      = 0.;
+    double       time_base = 0.;
+    /// Time integration/End time, the static problem's time of loads
+    /// (its end_time is 1).
+    double       static_load_time = 0.;
+    unsigned int steps_since      = 0;
+    double       next_output      = 0.05;
     Timer        since_checkpoint;
 
     // state of the time step
