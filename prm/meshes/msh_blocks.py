@@ -1,6 +1,6 @@
 """Rectangular blocks of quadrilaterals as a Gmsh 2.2 ASCII mesh, no vertex
-shared between blocks: the writer of stack.py and punch.py (and of
-benchmarks/loads_and_motion.py)."""
+shared between blocks, and any nodes and elements: the writer of stack.py,
+punch.py and ring.py (and of benchmarks/loads_and_motion.py)."""
 
 
 def write(file, blocks):
@@ -33,6 +33,12 @@ def write(file, blocks):
                 elements.append((1, b["left"], (node(0, j + 1), node(0, j))))
             if b.get("right"):
                 elements.append((1, b["right"], (node(nx, j), node(nx, j + 1))))
+    write_mesh(file, nodes, elements)
+
+
+def write_mesh(file, nodes, elements):
+    """Writes nodes (x, y) and elements (Gmsh type, tag, vertex numbers
+    from 1) to file, Gmsh 2.2 ASCII."""
     with open(file, "w") as out:
         out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes))
         for k, (x, y) in enumerate(nodes, 1):

@@ -6,6 +6,8 @@ Run: python3 ring.py (writes ring.msh beside it)."""
 import math
 import os
 
+import msh_blocks
+
 R1, R2, CENTRE_Y, AROUND, ACROSS = 0.3, 0.4, 0.6, 48, 3
 
 nodes, elements = [], []
@@ -26,11 +28,5 @@ for j in range(ACROSS):
 for i in range(AROUND):
     elements.append((1, 11, (node(i, ACROSS), node(i + 1, ACROSS))))
 
-with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "ring.msh"), "w") as out:
-    out.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes))
-    for k, (x, y) in enumerate(nodes, 1):
-        out.write("%d %.17g %.17g 0\n" % (k, x, y))
-    out.write("$EndNodes\n$Elements\n%d\n" % len(elements))
-    for k, (kind, tag, vertices) in enumerate(elements, 1):
-        out.write("%d %d 2 %d %d %s\n" % (k, kind, tag, tag, " ".join(map(str, vertices))))
-    out.write("$EndElements\n")
+msh_blocks.write_mesh(os.path.join(os.path.dirname(os.path.abspath(__file__)), "ring.msh"),
+                      nodes, elements)
