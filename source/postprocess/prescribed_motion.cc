@@ -8,6 +8,7 @@
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/integrators.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
 namespace dyncontact
 {
