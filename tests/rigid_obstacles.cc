@@ -66,13 +66,7 @@ namespace
     for (const unsigned int i : {nt / 4 - 1, nt / 4})
       elements << ++n << " 1 2 12 12 " << node(i, 0) << " " << node(i + 1, 0)
                << "\n";
-    if (testing::this_rank() == 0)
-      std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
-                          << nt * (nr + 1) << "\n"
-                          << nodes.str() << "$EndNodes\n$Elements\n"
-                          << n << "\n"
-                          << elements.str() << "$EndElements\n";
-    MPI_Barrier(MPI_COMM_WORLD);
+    testing::write_msh(file, nt * (nr + 1), nodes.str(), n, elements.str());
   }
 } // namespace
 
@@ -205,14 +199,8 @@ main(int argc, char **argv)
         elements << ++m << " 3 2 10 10 " << index(i, 0, k) << " "
                  << index(i + 1, 0, k) << " " << index(i + 1, 0, k + 1) << " "
                  << index(i, 0, k + 1) << "\n";
-    if (this_rank() == 0)
-      std::ofstream("cube.msh")
-        << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
-        << (n + 1) * (n + 1) * (n + 1) << "\n"
-        << nodes.str() << "$EndNodes\n$Elements\n"
-        << m << "\n"
-        << elements.str() << "$EndElements\n";
-    MPI_Barrier(MPI_COMM_WORLD);
+    write_msh(
+      "cube.msh", (n + 1) * (n + 1) * (n + 1), nodes.str(), m, elements.str());
     const Statistics s =
       run("set Dimension = 3\nset Output directory = results-obstacles-3d\n" +
           scene_prm("gmsh",

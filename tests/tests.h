@@ -465,6 +465,25 @@ namespace testing
                                                         right_tag = 0;
   };
 
+  /// Writes a Gmsh 2.2 ASCII mesh of @p n_nodes lines of @p nodes ("k x y
+  /// z") and @p n_elements lines of @p elements, on rank 0 (all ranks
+  /// wait for it).
+  inline void
+  write_msh(const std::string &file,
+            const unsigned int n_nodes,
+            const std::string &nodes,
+            const unsigned int n_elements,
+            const std::string &elements)
+  {
+    if (this_rank() == 0)
+      std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+                          << n_nodes << "\n"
+                          << nodes << "$EndNodes\n$Elements\n"
+                          << n_elements << "\n"
+                          << elements << "$EndElements\n";
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+
   /// Writes @p blocks as a Gmsh 2.2 ASCII mesh, no vertex shared.
   inline void
   write_block_msh(const std::string &file, const std::vector<Block> &blocks)
@@ -507,13 +526,7 @@ namespace testing
                    << b.right_tag << " " << node(b.nx, j) << " "
                    << node(b.nx, j + 1) << "\n";
       }
-    if (this_rank() == 0)
-      std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
-                          << n_nodes << "\n"
-                          << nodes.str() << "$EndNodes\n$Elements\n"
-                          << n_elements << "\n"
-                          << elements.str() << "$EndElements\n";
-    MPI_Barrier(MPI_COMM_WORLD);
+    write_msh(file, n_nodes, nodes.str(), n_elements, elements.str());
   }
 
   /// As run_program(@p file), in this process: the executable's own code

@@ -106,52 +106,48 @@ namespace dyncontact
               if (cell->face(face)->at_boundary())
                 {
                   const auto id = cell->face(face)->boundary_id();
-                  for (const auto &[traction_id, function] :
-                       function_loads.tractions)
-                    if (traction_id == id)
-                      {
-                        face_values.reinit(cell, face);
-                        function->vector_value_list(
-                          face_values.get_quadrature_points(), traction);
-                        for (unsigned int q = 0; q < face_quadrature.size();
-                             ++q)
-                          for (unsigned int d = 0; d < dim; ++d)
-                            check(traction[q][d],
-                                  face_values.quadrature_point(q),
-                                  "the traction of tag ",
-                                  id);
-                        for (unsigned int q = 0; q < face_quadrature.size();
-                             ++q)
-                          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                            cell_load(i) +=
-                              face_values.shape_value(node[i], q) *
-                              traction[q][component[i]] * face_values.JxW(q);
-                        any = true;
-                      }
-                  for (const auto &[pressure_id, function] :
-                       function_loads.pressures)
-                    if (pressure_id == id)
-                      {
-                        // the traction -p n
-                        face_values.reinit(cell, face);
-                        function->value_list(
-                          face_values.get_quadrature_points(), pressure);
-                        for (unsigned int q = 0; q < face_quadrature.size();
-                             ++q)
-                          check(pressure[q],
-                                face_values.quadrature_point(q),
-                                "the pressure of tag ",
-                                id);
-                        for (unsigned int q = 0; q < face_quadrature.size();
-                             ++q)
-                          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                            cell_load(i) -=
-                              face_values.shape_value(node[i], q) *
-                              pressure[q] *
-                              face_values.normal_vector(q)[component[i]] *
-                              face_values.JxW(q);
-                        any = true;
-                      }
+                  for (const auto *loads :
+                       {&function_loads.tractions, &function_loads.pressures})
+                    for (const auto &[load_id, function] : *loads)
+                      if (load_id == id)
+                        {
+                          // a traction, or a pressure's traction -p n
+                          const bool is_pressure =
+                            loads == &function_loads.pressures;
+                          face_values.reinit(cell, face);
+                          const auto &points =
+                            face_values.get_quadrature_points();
+                          if (is_pressure)
+                            function->value_list(points, pressure);
+                          else
+                            function->vector_value_list(points, traction);
+                          for (unsigned int q = 0; q < points.size(); ++q)
+                            {
+                              if (is_pressure)
+                                {
+                                  check(pressure[q],
+                                        points[q],
+                                        "the pressure of tag ",
+                                        id);
+                                  for (unsigned int d = 0; d < dim; ++d)
+                                    traction[q][d] =
+                                      -pressure[q] *
+                                      face_values.normal_vector(q)[d];
+                                }
+                              else
+                                for (unsigned int d = 0; d < dim; ++d)
+                                  check(traction[q][d],
+                                        points[q],
+                                        "the traction of tag ",
+                                        id);
+                              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                                cell_load(i) +=
+                                  face_values.shape_value(node[i], q) *
+                                  traction[q][component[i]] *
+                                  face_values.JxW(q);
+                            }
+                          any = true;
+                        }
                 }
             if (any)
               {

@@ -317,15 +317,16 @@ namespace dyncontact
 
 
   template <int dim>
-  std::optional<RigidObstacle<dim>>
-  BarImpact<dim>::obstacle() const
+  std::vector<RigidObstacle<dim>>
+  BarImpact<dim>::obstacles() const
   {
     Tensor<1, dim> e_x;
     e_x[0] = 1.;
     RigidObstacle<dim> wall;
-    wall.point  = Point<dim>(-initial_gap * rotate(e_x));
-    wall.normal = rotate(e_x);
-    return wall;
+    wall.point        = Point<dim>(-initial_gap * rotate(e_x));
+    wall.normal       = rotate(e_x);
+    wall.boundary_ids = contact_boundary_ids();
+    return {wall};
   }
 
 

@@ -71,8 +71,9 @@ namespace dyncontact
     initial_velocity(const Point<dim>  &x,
                      const unsigned int body) const override;
 
-    std::optional<RigidObstacle<dim>>
-    obstacle() const override;
+    /// The wall, met by the bar's end.
+    std::vector<RigidObstacle<dim>>
+    obstacles() const override;
 
     bool
     has_exact_solution() const override;

@@ -52,7 +52,7 @@ namespace dyncontact
     Point<dim>     point;
     Tensor<1, dim> normal;
     double         radius = 0.;
-    /// The boundary ids that meet it; empty: Scene::contact_boundary_ids().
+    /// The boundary ids that meet it.
     std::vector<types::boundary_id> boundary_ids;
 
     /// The gap of @p x (negative inside) and the outward unit normal of
@@ -244,7 +244,8 @@ namespace dyncontact
       return materials[body];
     }
 
-    /// Boundary ids that touch the rigid obstacle, if there is one.
+    /// Boundary ids that touch a rigid obstacle (the union of those of
+    /// obstacles()).
     virtual std::vector<types::boundary_id>
     contact_boundary_ids() const
     {
@@ -327,28 +328,13 @@ namespace dyncontact
     virtual Tensor<1, dim>
     initial_velocity(const Point<dim> &x, const unsigned int body) const = 0;
 
-    /// The rigid obstacle, if the scene has one (a scene with several
-    /// overrides obstacles() instead).
-    virtual std::optional<RigidObstacle<dim>>
-    obstacle() const
-    {
-      return {};
-    }
-
     /// The rigid obstacles, each a contact pair of its own (numbered after
-    /// the two-body pairs), with the boundary ids that meet it: by default
-    /// obstacle(), met by contact_boundary_ids().
+    /// the two-body pairs), with the boundary ids that meet it; none by
+    /// default.
     virtual std::vector<RigidObstacle<dim>>
     obstacles() const
     {
-      std::vector<RigidObstacle<dim>> list;
-      if (const auto one = obstacle())
-        {
-          list.push_back(*one);
-          if (list[0].boundary_ids.empty())
-            list[0].boundary_ids = contact_boundary_ids();
-        }
-      return list;
+      return {};
     }
 
     virtual bool
