@@ -126,16 +126,20 @@ namespace dyncontact
   ActiveSetSolver::constraints_of(const std::vector<char> &active,
                                   const VectorType        &layout) const
   {
-    const bool same = Utilities::MPI::min((last_constraints &&
-                                           last_constraints->active == active) ?
-                                            1 :
-                                            0,
-                                          comm) == 1;
+    // (the gaps of rigid obstacles that move change with the time)
+    const bool same =
+      Utilities::MPI::min((last_constraints &&
+                           last_constraints->active == active &&
+                           last_constraints->gap_version == rows->gap_version) ?
+                            1 :
+                            0,
+                          comm) == 1;
     if (!same)
       {
         last_constraints.reset();
-        auto c    = std::make_unique<ActiveSetConstraints>();
-        c->active = active;
+        auto c         = std::make_unique<ActiveSetConstraints>();
+        c->active      = active;
+        c->gap_version = rows->gap_version;
         make_constraints(active, c->constraints, false);
         make_constraints(active, c->homogeneous_constraints, true);
         c->homogeneous.reinit(c->homogeneous_constraints,

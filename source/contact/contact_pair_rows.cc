@@ -70,6 +70,7 @@ namespace dyncontact
   void
   ContactSetup<dim>::add_obstacle_rows(
     const RigidObstacle<dim>        &obstacle,
+    const unsigned int               obstacle_number,
     const unsigned int               pair_index,
     const std::vector<BoundaryNode> &nodes,
     const VectorType                &w_ghosted,
@@ -77,22 +78,26 @@ namespace dyncontact
   {
     // a rigid obstacle: nu = -n, g of the closest point of its surface
     // (for a half-space (x - x0) . n), no master entries
-    std::string       penetration;
-    const std::size_t n_rows_before = rows.size();
+    std::string          penetration;
+    const std::size_t    n_rows_before = rows.size();
+    const Tensor<1, dim> d0 = obstacle.displacement(0., obstacle_number);
     for (const BoundaryNode &node : nodes)
       {
         const Point<dim> &x = node.x;
         ContactRow        row;
-        row.n_components         = dim;
-        row.pair                 = pair_index;
-        const auto [gap, normal] = obstacle.gap_and_normal(x);
+        row.n_components = dim;
+        row.pair         = pair_index;
+        // (a moving obstacle: its surface at d(0), to which set_time()
+        // adds the motion since)
+        const auto [gap, normal] = obstacle.gap_and_normal(x - d0);
         for (unsigned int d = 0; d < dim; ++d)
           {
             row.entries.emplace_back(node.dofs[d], -normal[d]);
             row.normal[d]   = -normal[d];
             row.position[d] = x[d];
           }
-        row.gap = gap;
+        row.gap           = gap;
+        row.reference_gap = gap;
         AssertThrow(std::isfinite(row.gap),
                     ExcMessage("The gap of the node at (" +
                                Utilities::to_string(x[0]) + ", " +
@@ -377,6 +382,7 @@ namespace dyncontact
 #define DYNCONTACT_INSTANTIATE(dim)                                            \
   template void ContactSetup<dim>::add_obstacle_rows(                          \
     const RigidObstacle<dim> &,                                                \
+    const unsigned int,                                                        \
     const unsigned int,                                                        \
     const std::vector<ContactSetup<dim>::BoundaryNode> &,                      \
     const VectorType &,                                                        \

@@ -187,6 +187,7 @@ namespace dyncontact
       {
         const std::size_t before = rows.size();
         add_obstacle_rows(obstacles[k],
+                          k + 1,
                           pairs.size() + k,
                           boundary_nodes(system,
                                          mapping,
@@ -281,6 +282,24 @@ namespace dyncontact
     Utilities::MPI::sum(n_unmatched_in_pair, comm, n_unmatched_in_pair);
     if (n_unmatched_nodes == 0)
       master_surfaces.clear();
+
+    // rigid obstacles that move: their rows' gaps at the current time
+    rows.motions.clear();
+    for (unsigned int k = 0; k < obstacles.size(); ++k)
+      if (obstacles[k].motion != nullptr)
+        {
+          rows.motions.resize(pairs.size() + obstacles.size());
+          const RigidObstacle<dim> obstacle = obstacles[k];
+          rows.motions[pairs.size() + k]    = [obstacle, k](const double t) {
+            const Tensor<1, dim> d = obstacle.displacement(t, k + 1) -
+                                     obstacle.displacement(0., k + 1);
+            std::array<double, 3> shift{{0., 0., 0.}};
+            for (unsigned int c = 0; c < dim; ++c)
+              shift[c] = d[c];
+            return shift;
+          };
+        }
+    set_obstacle_time(obstacle_time);
 
     row_operator.reinit(locally_owned, locally_relevant, rows);
     unpaired_bodies.setup(pairs, scene.n_bodies(), system, mapping);

@@ -69,7 +69,9 @@ namespace dyncontact
         for (const auto &node : unmatched)
           if (node.pair == search_radii.size() + k)
             {
-              Point<dim> y = node.x;
+              // (a moving obstacle where set_obstacle_time() put it)
+              Point<dim> y =
+                node.x - rigid_obstacles[k].displacement(obstacle_time, k + 1);
               for (unsigned int d = 0; d < dim; ++d)
                 y[d] += ghosted(node.dofs[d]);
               const double depth = -rigid_obstacles[k].gap_and_normal(y).first;

@@ -5,9 +5,11 @@
 // (du); with loads that change in time (f(t)) the work of their change
 // W_load -= 1/2 (f^{n+1} - f^n)^T (u^n + u^{n+1}) (column work_load_change),
 // and with Dirichlet data that move the work of their force R on the body
-// W_D += R^T (u^{n+1} - u^n) (column work_prescribed);
-// E_kin + E_el + W_visc (+ W_num) (- W_load - W_D) is constant without
-// contact and non-increasing with contact.
+// W_D += R^T (u^{n+1} - u^n) (column work_prescribed), and with rigid
+// obstacles that move the work of their contact forces W_obs (column
+// work_obstacles, StepReport::obstacle_work);
+// E_kin + E_el + W_visc (+ W_num) (- W_load - W_D - W_obs) is constant
+// without contact and non-increasing with contact.
 //
 // The balance monitor: energy_balance = E + W_visc (+ W_num) - E(0) minus the
 // energy
@@ -59,7 +61,9 @@ namespace dyncontact
         // the energy the loads' change in time supplied counts as a source
         const bool load_change = s.has_column("work_load_change");
         const bool moving      = s.has_column("work_prescribed");
-        for (const std::string column : {"work_load_change", "work_prescribed"})
+        const bool obstacles   = s.has_column("work_obstacles");
+        for (const std::string column :
+             {"work_load_change", "work_prescribed", "work_obstacles"})
           if (s.has_column(column))
             {
               const auto w = s.column(column);
@@ -86,7 +90,7 @@ namespace dyncontact
         std::ostringstream out;
         out << std::setprecision(6) << "energy E + W_visc"
             << (numerical ? " + W_num" : "") << (load_change ? " - W_load" : "")
-            << (moving ? " - W_D" : "") << ": "
+            << (moving ? " - W_D" : "") << (obstacles ? " - W_obs" : "") << ": "
             << kinetic[0] + elastic[0] + dissipation[0] << " " << energy
             << " at the start, "
             << kinetic[last] + elastic[last] + dissipation[last] << " "
@@ -119,6 +123,8 @@ namespace dyncontact
           names.insert(names.end() - 2, "work_load_change");
         if (moves())
           names.insert(names.end() - 2, "work_prescribed");
+        if (obstacles_move())
+          names.insert(names.end() - 2, "work_obstacles");
         return names;
       }
 
@@ -161,8 +167,11 @@ namespace dyncontact
             prescribed_work +=
               this->get_integrator().get_operators().prescribed_reaction() * du;
           }
+        if (this->get_control().get_step() > 0 && obstacles_move() &&
+            !is_static)
+          obstacle_work += this->get_step_report().obstacle_work;
         const double total = kinetic + elastic + dissipation + numerical -
-                             load_work - prescribed_work;
+                             load_work - prescribed_work - obstacle_work;
         const unsigned int step = this->get_control().get_step();
         if (step == 0)
           initial = total;
@@ -171,7 +180,8 @@ namespace dyncontact
         const double balance   = is_static ? 0. : total - initial - transfers;
         scale                  = std::max(scale,
                          kinetic + std::abs(elastic) + dissipation + numerical +
-                           std::abs(load_work) + std::abs(prescribed_work));
+                           std::abs(load_work) + std::abs(prescribed_work) +
+                           std::abs(obstacle_work));
         const double tolerance = this->get_integrator()
                                    .get_operators()
                                    .get_solver_parameters()
@@ -205,6 +215,8 @@ namespace dyncontact
           row.push_back(load_work);
         if (moves())
           row.push_back(prescribed_work);
+        if (obstacles_move())
+          row.push_back(obstacle_work);
         row.insert(row.end(), {kinetic + elastic, balance});
       }
 
@@ -234,6 +246,12 @@ namespace dyncontact
             w << std::setprecision(17) << prescribed_work;
             state["prescribed_work"] = w.str();
           }
+        if (obstacles_move())
+          {
+            std::ostringstream w;
+            w << std::setprecision(17) << obstacle_work;
+            state["obstacle_work"] = w.str();
+          }
       }
 
       void
@@ -260,6 +278,8 @@ namespace dyncontact
           load_work = std::stod(state.at("load_change_work"));
         if (state.count("prescribed_work"))
           prescribed_work = std::stod(state.at("prescribed_work"));
+        if (state.count("obstacle_work"))
+          obstacle_work = std::stod(state.at("obstacle_work"));
       }
 
     private:
@@ -286,10 +306,21 @@ namespace dyncontact
         return !this->get_scene().prescribed_displacements().empty();
       }
 
-      /// the work of the loads' change in time, W_load, and of the
-      /// Dirichlet data that move, W_D
+      /// Whether a rigid obstacle moves (RigidObstacle::motion).
+      bool
+      obstacles_move() const
+      {
+        for (const auto &obstacle : this->get_scene().obstacles())
+          if (obstacle.motion != nullptr)
+            return true;
+        return false;
+      }
+
+      /// the work of the loads' change in time, W_load, of the Dirichlet
+      /// data that move, W_D, and of the rigid obstacles that move, W_obs
       double       load_work        = 0.;
       double       prescribed_work  = 0.;
+      double       obstacle_work    = 0.;
       double       initial          = 0.;
       double       transfers        = 0.;
       double       scale            = 0.;

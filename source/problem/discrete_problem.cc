@@ -181,6 +181,11 @@ namespace dyncontact
                                             const VectorType &S_diagonal) {
         return multigrid->make_preconditioner(a, b, S_vmult, S_diagonal);
       };
+    std::function<void(double)> move_obstacles;
+    if (contact->get_rows().obstacles_move())
+      move_obstacles = [this](const double t) {
+        contact->set_obstacle_time(t);
+      };
     integrator = std::make_unique<TimeIntegrator>(
       scheme,
       parameters.numerical_dissipation,
@@ -192,7 +197,8 @@ namespace dyncontact
                          system->get_constraints(),
                          contact->get_rows(),
                          near_null_space,
-                         comm});
+                         comm,
+                         move_obstacles});
     // ML's temporaries (AMG is made only on an assembled matrix)
     if (matrices_assembled())
       release_freed_memory();
@@ -364,6 +370,7 @@ namespace dyncontact
   DiscreteProblem<dim>::set_load_time(const double t)
   {
     system->set_load_time(t);
+    contact->set_obstacle_time(t);
   }
 
 
@@ -382,6 +389,8 @@ namespace dyncontact
       }
     {
       TimerOutput::Scope t(timer, "time step");
+      step_start_time = t_end - tau;
+      integrator->set_step_times(step_start_time, t_end);
       report = integrator->step(tau, level_step, u, udot);
     }
     system->end_step_load();
@@ -410,6 +419,8 @@ namespace dyncontact
     udot              = udot_old;
     if (load_stepped)
       system->undo_step_load();
+    // (rigid obstacles that move: back where they were at t_n)
+    contact->set_obstacle_time(step_start_time);
     load_stepped = false;
     integrator->warm_start(active.first, active.second);
   }

@@ -5,6 +5,9 @@
 #include <dyncontact/scenes/gmsh_scene.h>
 
 #include <cmath>
+#include <map>
+#include <memory>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -47,10 +50,37 @@ namespace dyncontact
     /// 'cylinder P axis A radius R'.
     template <int dim>
     RigidObstacle<dim>
-    parse_obstacle_item(const std::string &item, const unsigned int k)
+    parse_obstacle_item(const std::string                   &whole_item,
+                        const unsigned int                   k,
+                        const std::map<std::string, double> &constants)
     {
       const std::string entry =
-        "Obstacles (obstacle " + std::to_string(k) + ", '" + item + "')";
+        "Obstacles (obstacle " + std::to_string(k) + ", '" + whole_item + "')";
+      // a prescribed translation: 'moving d1, d2[, d3]' at the end
+      const std::size_t moving = whole_item.find(" moving ");
+      const std::string item   = Utilities::trim(whole_item.substr(0, moving));
+      std::shared_ptr<Function<dim>> motion;
+      if (moving != std::string::npos)
+        {
+          const auto expressions =
+            split_top_level(whole_item.substr(moving + 8), ',');
+          AssertThrow(expressions.size() == dim,
+                      ExcMessage("Scene/Gmsh/" + entry + ": 'moving' has " +
+                                 std::to_string(expressions.size()) +
+                                 " components separated by ','; a " +
+                                 std::to_string(dim) + "D mesh needs " +
+                                 std::to_string(dim) + "."));
+          const std::regex place("(^|[^A-Za-z0-9_])[xyz]([^A-Za-z0-9_]|$)");
+          for (const std::string &expression : expressions)
+            AssertThrow(!std::regex_search(expression, place),
+                        ExcMessage("Scene/Gmsh/" + entry + ": the motion '" +
+                                   expression +
+                                   "' uses x, y or z; an obstacle moves as "
+                                   "a whole, with a translation d(t) that "
+                                   "depends on t alone."));
+          motion =
+            make_function<dim>(entry, expressions, constants, /*of_time=*/true);
+        }
       const std::string form =
         "Scene/Gmsh/Obstacles: '" + item +
         "' is no 'plane x, y[, z] normal a, b[, c]', 'sphere x, y[, z] "
@@ -113,6 +143,9 @@ namespace dyncontact
         }
       else
         AssertThrow(false, ExcMessage(form));
+      obstacle.motion = motion;
+      if (motion != nullptr)
+        obstacle.displacement(0., k); // (refuses a value that is not finite)
       return obstacle;
     }
   } // namespace
@@ -137,8 +170,10 @@ namespace dyncontact
             AssertThrow(!item.empty(),
                         ExcMessage("Scene/Gmsh/Obstacles = '" + list +
                                    "' has an empty item."));
-            rigid_obstacles.push_back(
-              parse_obstacle_item<dim>(item, rigid_obstacles.size() + 1));
+            rigid_obstacles.push_back(parse_obstacle_item<dim>(
+              item,
+              rigid_obstacles.size() + 1,
+              parse_constants(prm.get("Function constants"))));
           }
       }
     else

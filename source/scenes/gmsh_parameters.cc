@@ -173,8 +173,13 @@ namespace dyncontact
       "2D a disc: centre and radius, m) or 'cylinder x, y, z axis a, b, c "
       "radius r' (3D: a solid cylinder about the axis through the point), "
       "e.g. 'plane 0, 0 normal 1, 1; plane 0, 0 normal -1, 1' (a "
-      "V-groove). A slave node gets the constraint of the obstacle's "
-      "surface nearest to it at t = 0, linearised there.");
+      "V-groove). An item may end with 'moving d1, d2[, d3]': a prescribed "
+      "translation d(t) of the obstacle (m; expressions in t and the "
+      "Function constants, not in x, y, z), e.g. 'plane 0, 0.5 normal 0, -1 "
+      "moving 0, -0.1*t' (a rigid punch pressed down at 0.1 m/s). A slave "
+      "node gets the constraint of the obstacle's surface nearest to it at "
+      "t = 0 (at d(0)), linearised there; a moving obstacle's gap is that "
+      "gap plus nu . (d(t) - d(0)).");
     prm.declare_entry(
       "Initial displacement",
       "",
@@ -268,14 +273,19 @@ namespace dyncontact
       unread.emplace_back("Scene/Gmsh/Initial velocity of body 2",
                           "the mesh has one body (Scene/Gmsh/Body 2 tags is "
                           "empty)");
+    bool moving_obstacle = false;
+    for (const auto &obstacle : rigid_obstacles)
+      moving_obstacle = moving_obstacle || obstacle.motion != nullptr;
     if (displacement_functions.empty() && velocity_functions.empty() &&
         traction_functions.empty() && pressure_functions.empty() &&
-        body_force_functions.empty() && prescribed_functions.empty())
+        body_force_functions.empty() && prescribed_functions.empty() &&
+        !moving_obstacle)
       unread.emplace_back("Scene/Gmsh/Function constants",
                           "no function uses them (Initial displacement, "
                           "Initial velocity, Body force, Pressures, "
-                          "Prescribed displacements or a traction of Neumann "
-                          "tractions that is no number)");
+                          "Prescribed displacements, a traction of Neumann "
+                          "tractions that is no number or an obstacle's "
+                          "motion in Obstacles)");
     return unread;
   }
 

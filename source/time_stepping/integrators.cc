@@ -19,18 +19,59 @@ namespace dyncontact
 
   namespace
   {
-    /// (11c) and (12d): argmin_K 1/2 v^T S v - r(u + tau udot)^T v.
+    /// With rigid obstacles that move: this rank's gaps g_p(t) - g_p(s),
+    /// the rows' gaps left at time @p t (doc/algorithms.md, "Rigid
+    /// obstacles that move").
+    std::vector<double>
+    gap_change(const StepOperators &ops, const double s, const double t)
+    {
+      const auto &rows = ops.contact_rows().rows;
+      ops.constraints_at(s);
+      std::vector<double> change(rows.size());
+      for (unsigned int p = 0; p < rows.size(); ++p)
+        change[p] = -rows[p].gap;
+      ops.constraints_at(t);
+      for (unsigned int p = 0; p < rows.size(); ++p)
+        change[p] += rows[p].gap;
+      return change;
+    }
+
+
+
+    /// -factor sum_p multipliers_p change_p: the work of a moving
+    /// obstacle's contact forces (this rank's rows).
+    double
+    obstacle_work(const std::vector<double> &multipliers,
+                  const std::vector<double> &change,
+                  const double               factor)
+    {
+      double work = 0.;
+      for (unsigned int p = 0; p < change.size(); ++p)
+        work -= factor * multipliers[p] * change[p];
+      return work;
+    }
+
+
+
+    /// (11c) and (12d): argmin_K 1/2 v^T S v - r(u + tau udot)^T v, K at
+    /// t_{n+1}.
     VectorType
     implicit_displacement(StepOperators    &ops,
                           const VectorType &u,
                           const VectorType &udot,
                           StepReport       &report)
     {
+      std::vector<double> change;
+      if (ops.obstacles_move())
+        change = gap_change(ops, ops.step_start(), ops.step_end());
       VectorType w(u), r(u);
       w.add(ops.tau(), udot);
       ops.rhs(w, u, r);
       VectorType u_new(w);
       ops.solve_displacement(r, u_new, report);
+      if (ops.obstacles_move())
+        report.obstacle_work +=
+          obstacle_work(report.multipliers, change, report.force_factor);
       return u_new;
     }
 
@@ -50,7 +91,7 @@ namespace dyncontact
 
 
     /// (12c) and (12f): @p velocity = (P(x + tau v) - x) / tau (@p v may
-    /// be @p velocity).
+    /// be @p velocity), K at the time of x + tau v, t_{n+1} + tau.
     void
     projected_velocity(StepOperators    &ops,
                        const VectorType &x,
@@ -58,10 +99,21 @@ namespace dyncontact
                        VectorType       &velocity,
                        StepReport       &report)
     {
-      const double tau = ops.tau();
-      VectorType   w(x), projected(x);
+      const double        tau = ops.tau();
+      std::vector<double> change;
+      if (ops.obstacles_move())
+        change = gap_change(ops, ops.step_end(), ops.step_end() + tau);
+      VectorType w(x), projected(x);
       w.add(tau, v);
       ops.project(w, projected, report);
+      if (ops.obstacles_move())
+        {
+          // (the kinetic energy's change: 1/2 |P(w) - x|_M^2 / tau^2 ...)
+          report.obstacle_work += obstacle_work(report.projection_multipliers,
+                                                change,
+                                                1. / (tau * tau));
+          ops.constraints_at(ops.step_end());
+        }
       velocity = projected;
       velocity -= x;
       velocity /= tau;
@@ -91,7 +143,10 @@ namespace dyncontact
              StepReport    &report)
     {
       const double tau = ops.tau();
-      // u_pred = P(u^n + tau udot^n)
+      // u_pred = P(u^n + tau udot^n), K at t_{n+1}
+      std::vector<double> change;
+      if (ops.obstacles_move())
+        change = gap_change(ops, ops.step_start(), ops.step_end());
       VectorType w(u), u_pred(u), r(u);
       w.add(tau, udot);
       ops.project(w, u_pred, report);
@@ -102,6 +157,10 @@ namespace dyncontact
       ops.rhs(u_pred, u, r);
       VectorType u_new(u_pred);
       ops.solve_displacement(r, u_new, report);
+      if (ops.obstacles_move())
+        // (the displacement step's share only: the predictor moves u)
+        report.obstacle_work +=
+          obstacle_work(report.multipliers, change, report.force_factor);
       // udot^{n+1} = udot^n + 2/tau (u^{n+1} - u_pred)
       udot.add(2. / tau, u_new);
       udot.add(-2. / tau, u_pred);
@@ -149,7 +208,8 @@ namespace dyncontact
                 VectorType    &udot,
                 StepReport    &report)
     {
-      // min 1/2 v^T A v - f^T v on K_h
+      // min 1/2 v^T A v - f^T v on K_h (at End time)
+      ops.constraints_at(ops.step_end());
       ops.solve_displacement(ops.load(), u, report);
       udot = 0.;
     }
@@ -277,6 +337,8 @@ namespace dyncontact
           }
       }
 
+    if (operators.obstacles_move())
+      report.obstacle_work = Utilities::MPI::sum(report.obstacle_work, comm);
     // Gamma*_{h,C} (eq. 40): rows where the projection was active but the
     // displacement step was not
     for (unsigned int p = 0; p < operators.n_rows(); ++p)

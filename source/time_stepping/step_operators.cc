@@ -23,6 +23,7 @@ namespace dyncontact
     : displacement_active(inputs.rows.size(), 0)
     , projection_active(inputs.rows.size(), 0)
     , is_static(is_static)
+    , move_obstacles(inputs.move_obstacles)
     , theta(is_static ? 0. : numerical_dissipation)
     , system(inputs.system)
     , solver_parameters(inputs.solver_parameters)
@@ -249,6 +250,8 @@ namespace dyncontact
     if (system.prescribed != nullptr)
       v += W;
     report.projection_active = projection_active;
+    if (obstacles_move())
+      report.projection_multipliers = multipliers;
   }
 
 

@@ -310,7 +310,9 @@ namespace dyncontact
       ActiveSetConstraints &
       operator=(const ActiveSetConstraints &) = delete;
 
-      std::vector<char>         active;
+      std::vector<char> active;
+      /// ContactRows::gap_version of the gaps they were made with
+      unsigned long             gap_version = 0;
       AffineConstraints<double> constraints, homogeneous_constraints;
       Condensation              homogeneous;
     };

@@ -4,6 +4,7 @@
 #include <deal.II/base/types.h>
 
 #include <array>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -30,8 +31,12 @@ namespace dyncontact
     std::array<double, 3> normal{{0., 0., 0.}};
     /// Reference position x_p of the slave node.
     std::array<double, 3> position{{0., 0., 0.}};
-    /// The gap g_p (eq. 2) in m.
+    /// The gap g_p (eq. 2) in m; against a rigid obstacle that moves, at
+    /// the time of ContactRows::set_time().
     double gap = 0.;
+    /// Against a rigid obstacle that moves: the gap at the obstacle's
+    /// position d(0) (m).
+    double reference_gap = 0.;
     /// The boundary weight w_p = int_{Gamma_C} psi_p ds (m^{d-1}).
     double weight = 0.;
     /// The contact pair of the row: its index in Scene::contact_pairs(); the
@@ -68,6 +73,42 @@ namespace dyncontact
   struct ContactRows
   {
     std::vector<ContactRow> rows;
+
+    /// Rigid obstacles that move: per pair index, d(t) - d(0) of the
+    /// obstacle of that pair (an empty function for the pairs that do not
+    /// move); empty if none moves.
+    std::vector<std::function<std::array<double, 3>(double)>> motions;
+
+    /// Counts the changes of the gaps by set_time() (the active-set
+    /// solvers' constraints are made anew after one).
+    unsigned long gap_version = 0;
+
+    /// Whether a rigid obstacle moves (the gaps depend on t).
+    bool
+    obstacles_move() const
+    {
+      return !motions.empty();
+    }
+
+    /// The gaps of the rows against moving obstacles at time @p t:
+    /// g_p(t) = g_p(0) + nu_p . (d(t) - d(0)) (the obstacle moved by
+    /// d(t) - d(0) opens the gap along nu_p, which points into it).
+    void
+    set_time(const double t)
+    {
+      ++gap_version;
+      std::vector<std::array<double, 3>> d(motions.size());
+      for (unsigned int k = 0; k < motions.size(); ++k)
+        if (motions[k])
+          d[k] = motions[k](t);
+      for (ContactRow &row : rows)
+        if (row.pair < motions.size() && motions[row.pair])
+          {
+            row.gap = row.reference_gap;
+            for (unsigned int c = 0; c < row.n_components; ++c)
+              row.gap += row.normal[c] * d[row.pair][c];
+          }
+    }
 
     std::size_t
     size() const

@@ -80,6 +80,17 @@ namespace dyncontact
       return rows;
     }
 
+    /// With rigid obstacles that move: the rows' gaps at time @p t (also
+    /// those of every later set-up, until the next call); nothing
+    /// otherwise.
+    void
+    set_obstacle_time(const double t)
+    {
+      obstacle_time = t;
+      if (rows.obstacles_move())
+        rows.set_time(t);
+    }
+
     /**
      * Keeps the slave sides that "Slave side = auto" chose on the current
      * mesh (the mesh at t = 0) for every later set-up, so that an adapted
@@ -191,9 +202,11 @@ namespace dyncontact
             const AffineConstraints<double> &constraints);
 
     /// The rows of the nodes @p nodes against the rigid obstacle, with the
-    /// pair index @p pair_index.
+    /// pair index @p pair_index (the obstacle number @p obstacle_number
+    /// from 1, for messages).
     void
     add_obstacle_rows(const RigidObstacle<dim>        &obstacle,
+                      const unsigned int               obstacle_number,
                       const unsigned int               pair_index,
                       const std::vector<BoundaryNode> &nodes,
                       const VectorType                &w_ghosted,
@@ -314,9 +327,11 @@ namespace dyncontact
     mutable bool moving_contact_nodes = false;
     /// The system of the rows being set up (in setup()).
     const SemiDiscreteSystem<dim> *rows_system = nullptr;
-    IndexSet                       locally_owned;
-    IndexSet                       locally_relevant;
-    ContactRowOperator             row_operator;
+    /// The time of the moving obstacles' gaps (set_obstacle_time()).
+    double             obstacle_time = 0.;
+    IndexSet           locally_owned;
+    IndexSet           locally_relevant;
+    ContactRowOperator row_operator;
     /// Per pair: the slave side (0, 1) of the last set-up, and those kept by
     /// keep_slave_sides() (empty: chosen anew at each set-up).
     std::vector<unsigned int> slave_sides;

@@ -347,6 +347,8 @@ namespace dyncontact
     bool                                     warned_inertia = false;
     /// Whether a trial moved the loads to its end (undone by restore()).
     bool load_stepped = false;
+    /// t_n of the last trial step (restore() puts moving obstacles back).
+    double step_start_time = 0.;
 
     // the state
     VectorType u, udot, u_old, udot_old;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <set>
@@ -54,6 +55,33 @@ namespace dyncontact
     double         radius = 0.;
     /// The boundary ids that meet it.
     std::vector<types::boundary_id> boundary_ids;
+    /// A prescribed translation d(t) of the obstacle (m, dim components of
+    /// a function of t alone); nullptr: it stays where it is. The shape
+    /// above is its position at d = 0.
+    std::shared_ptr<Function<dim>> motion;
+
+    /// d(t) (zero without a motion); a value that is not finite or beyond
+    /// 1e15 m is refused naming the obstacle @p k (from 1).
+    Tensor<1, dim>
+    displacement(const double t, const unsigned int k) const
+    {
+      Tensor<1, dim> d;
+      if (motion == nullptr)
+        return d;
+      motion->set_time(t);
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          d[c] = motion->value(Point<dim>(), c);
+          AssertThrow(std::isfinite(d[c]) && std::abs(d[c]) <= 1e15,
+                      ExcMessage("The motion of obstacle " + std::to_string(k) +
+                                 " (Scene/Gmsh/Obstacles, 'moving') is " +
+                                 std::to_string(d[c]) + " m in component " +
+                                 std::to_string(c) +
+                                 " at t = " + std::to_string(t) +
+                                 " s: it must be finite and at most 1e15 m."));
+        }
+      return d;
+    }
 
     /// The gap of @p x (negative inside) and the outward unit normal of
     /// the surface at its point closest to @p x (zero on a ball's centre or

@@ -150,6 +150,13 @@ namespace dyncontact
       return operators.condition_bound();
     }
 
+    /// StepOperators::set_step_times(): t_n and t_{n+1} of the next step.
+    void
+    set_step_times(const double start, const double end)
+    {
+      operators.set_step_times(start, end);
+    }
+
     /// The operators (for the step control's estimates).
     const StepOperators &
     get_operators() const

@@ -4,6 +4,7 @@
 #include <dyncontact/contact/active_set_solver.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -38,6 +39,12 @@ namespace dyncontact
     /// theta (du)^T A (du), what the step's numerical dissipation theta took
     /// (J; 0 for theta = 0).
     double numerical_dissipation = 0.;
+    /// With rigid obstacles that move: the work of their contact forces on
+    /// the bodies in the step (J, summed over the ranks; doc/algorithms.md,
+    /// "Rigid obstacles that move"), and the multipliers of the L2
+    /// projection it is computed from.
+    double              obstacle_work = 0.;
+    std::vector<double> projection_multipliers;
 
     /// Whether both constrained problems of the step converged.
     bool
@@ -72,6 +79,9 @@ namespace dyncontact
     const ContactRows                    &rows;
     const ActiveSetSolver::NearNullSpace &near_null_space;
     MPI_Comm                              comm;
+    /// With rigid obstacles that move: sets the rows' gaps to those at a
+    /// time t; empty otherwise.
+    std::function<void(double)> move_obstacles = {};
   };
 
   /**
@@ -200,6 +210,43 @@ namespace dyncontact
       return current->solver->get_condition_bound();
     }
 
+    /// The step's start and end times t_n and t_{n+1} (s): the gaps of
+    /// rigid obstacles that move depend on them.
+    void
+    set_step_times(const double start, const double end)
+    {
+      t_start = start;
+      t_end   = end;
+    }
+
+    double
+    step_start() const
+    {
+      return t_start;
+    }
+
+    double
+    step_end() const
+    {
+      return t_end;
+    }
+
+    /// Whether rigid obstacles move (the rows' gaps depend on t).
+    bool
+    obstacles_move() const
+    {
+      return static_cast<bool>(move_obstacles);
+    }
+
+    /// With rigid obstacles that move: the rows' gaps at time @p t (the
+    /// constrained problems that follow use them); nothing otherwise.
+    void
+    constraints_at(const double t) const
+    {
+      if (move_obstacles)
+        move_obstacles(t);
+    }
+
     /// The warm-start active sets (displacement step, projection).
     std::vector<char> displacement_active;
     std::vector<char> projection_active;
@@ -255,7 +302,10 @@ namespace dyncontact
     std::unique_ptr<StepMatrix>
     make_step_matrix(const double tau) const;
 
-    const bool is_static;
+    const bool                        is_static;
+    const std::function<void(double)> move_obstacles;
+    double                            t_start = 0.;
+    double                            t_end   = 0.;
     /// theta: A acts on (1/2 + theta) u^{n+1} + (1/2 - theta) u^n
     const double                      theta;
     const SystemMatrices              system;
