@@ -18,8 +18,20 @@
 //   same output).
 // - Resumed from a checkpoint written after the adaptation, the run ends
 //   as the uninterrupted one.
+// - The same circle as a CAD curve (OpenCASCADE; tests/cad): a STEP file
+//   in m and an IGES file in mm with 'scale 0.001' give the polygons'
+//   areas (to the CAD tolerance, 1e-6), the adaptive mesh its exact area,
+//   and a resumed run the uninterrupted one's statistics.
+// - 3D: a cylinder of five hexahedra whose mantle is bound to the mantle
+//   of a solid CAD cylinder: refined once and twice, the volume of the
+//   prism of 8 and 16 sides (to 1e-6), as with the built-in cylinder
+//   binding (the solid's end caps, nearer to the midpoints of the rim's
+//   edges, would draw those onto the caps: 1.31 instead of 1.41).
 // - Bad input: a tag that is not on the boundary, a centre that the tag's
-//   faces are not around, a cylinder in 2D, an item that is no binding.
+//   faces are not around, a cylinder in 2D, an item that is no binding; a
+//   CAD file that does not exist, is no IGES or STEP, cannot be read, or
+//   whose curve the tag is not on (a circle of radius 2, or the IGES file
+//   without its scale), and a scale of 0.
 
 #include <filesystem>
 
@@ -51,6 +63,19 @@ namespace
         << "8 1 2 20 20 7 8\n9 1 2 20 20 8 5\n$EndElements\n";
     if (testing::this_rank() == 0)
       std::ofstream(file) << out.str();
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+
+  /// Copies the CAD file @p name of tests/cad (exact circles, see its
+  /// README.md) to the working directory, on rank 0.
+  void
+  copy_cad_file(const std::string &name)
+  {
+    if (testing::this_rank() == 0)
+      std::filesystem::copy_file(
+        std::string(DYNCONTACT_SOURCE_DIR) + "/tests/cad/" + name,
+        name,
+        std::filesystem::copy_options::overwrite_existing);
     MPI_Barrier(MPI_COMM_WORLD);
   }
 
@@ -125,39 +150,123 @@ main(int argc, char **argv)
   };
   const Statistics adapted   = run(adaptive_prm("results-adaptive", bound));
   const Statistics unadapted = run(adaptive_prm("results-flat", ""));
-  const double     exact =
+  const double     exact_adapted =
     2. * std::sqrt(2.) +
     6. * 0.5 * (2. * std::sin(M_PI / 8.) - std::sin(M_PI / 4.));
   log() << "adaptive: cells " << adapted.column("cells").front() << " -> "
         << adapted.column("cells").back() << ", area bound to the circle "
-        << fmt(area_of(adapted), 7) << " (exact " << fmt(exact, 7)
+        << fmt(area_of(adapted), 7) << " (exact " << fmt(exact_adapted, 7)
         << "), not bound " << fmt(area_of(unadapted), 7) << ": "
-        << check(std::abs(area_of(adapted) - exact) < 1e-10 &&
+        << check(std::abs(area_of(adapted) - exact_adapted) < 1e-10 &&
                  std::abs(area_of(unadapted) - 2.) < 1e-10)
         << "\n";
 
   // 3. a checkpoint after the adaptation, resumed
-  const std::string checkpointed =
-    adaptive_prm("results-resumed", bound) +
-    "subsection Checkpointing\n  set Interval in steps = 2\nend\n";
-  std::string first_half = checkpointed;
-  first_half.replace(first_half.find("End time = 0.04"), 15, "End time = 0.02");
-  run(first_half);
-  const Statistics resumed =
-    run(checkpointed + "subsection Checkpointing\n  set Resume = true\nend\n");
-  const auto difference = statistics_difference(adapted, resumed);
+  const auto resumed_difference = [&](const std::string &binding,
+                                      const Statistics  &uninterrupted) {
+    const std::string checkpointed =
+      adaptive_prm("results-resumed", binding) +
+      "subsection Checkpointing\n  set Interval in steps = 2\nend\n";
+    std::string first_half = checkpointed;
+    first_half.replace(first_half.find("End time = 0.04"),
+                       15,
+                       "End time = 0.02");
+    run(first_half);
+    const Statistics resumed = run(
+      checkpointed + "subsection Checkpointing\n  set Resume = true\nend\n");
+    return statistics_difference(uninterrupted, resumed).first;
+  };
   log() << "resumed after the adaptation: ends as the uninterrupted run "
            "(largest difference < 1e-10): "
-        << check(difference.first < 1e-10) << "\n";
+        << check(resumed_difference(bound, adapted) < 1e-10) << "\n";
 
-  // 4. bad input
+  // 4. the circle as a CAD curve, in m (STEP) and in mm (IGES)
+  copy_cad_file("circle.step");
+  copy_cad_file("circle_mm.iges");
+  for (const std::string cad :
+       {"20: cad circle.step", "20: cad circle_mm.iges scale 0.001"})
+    {
+      const std::string binding = "    set Manifolds = " + cad + "\n";
+      bool              exact   = true;
+      for (unsigned int k = 1; k <= 3; ++k)
+        {
+          const double n = 4 * std::pow(2., k);
+          exact          = exact &&
+                  std::abs(area_of(run(disc_prm("results-cad", binding) +
+                                       "subsection Mesh\n  set Initial global "
+                                       "refinements = " +
+                                       std::to_string(k) + "\nend\n")) -
+                           n / 2 * std::sin(2 * M_PI / n)) < 1e-6;
+        }
+      const Statistics cad_adapted = run(adaptive_prm("results-cad", binding));
+      log() << cad << ": 1 to 3 global refinements the polygons' areas, "
+            << "adaptive " << fmt(area_of(cad_adapted), 7) << " (exact "
+            << fmt(exact_adapted, 7) << "), to 1e-6: "
+            << check(exact &&
+                     std::abs(area_of(cad_adapted) - exact_adapted) < 1e-6)
+            << "\n";
+      if (cad.find("step") != std::string::npos)
+        log() << cad << ": resumed after the adaptation, ends as the "
+              << "uninterrupted run (largest difference < 1e-10): "
+              << check(resumed_difference(binding, cad_adapted) < 1e-10)
+              << "\n";
+    }
+
+  // 5. 3D: the mantle of a solid cylinder from a CAD file; its end caps,
+  // which the mesh's mantle tag does not cover, do not draw the new points
+  // on the mantle's rim
+  copy_cad_file("cylinder.step");
+  copy_cad_file("cylinder.msh");
+  for (unsigned int k = 1; k <= 2; ++k)
+    {
+      const auto volume = [&](const std::string &binding) {
+        return -run("set Dimension = 3\nset Output directory = "
+                    "results-cylinder\n" +
+                    scene_prm("gmsh",
+                              "    set Mesh file = cylinder.msh\n"
+                              "    set Initial velocity of body 1 = 0, -1, 0\n"
+                              "    set Manifolds = 11: " +
+                                binding + "\n") +
+                    "subsection Mesh\n  set Initial global refinements = " +
+                    std::to_string(k) +
+                    "\nend\nsubsection Time integration\n"
+                    "  set Time step = 0.01\n  set End time = 0.01\nend\n"
+                    "subsection Output\n  set Write vtu = false\nend\n")
+                  .column("momentum_y")
+                  .back();
+      };
+      const double n     = 4 * std::pow(2., k);
+      const double exact = 2. * n / 2 * std::sin(2 * M_PI / n) * 0.25;
+      const double cad   = volume("cad cylinder.step");
+      log() << "3D, " << k << " global refinements: volume bound to the CAD "
+            << "cylinder " << fmt(cad, 6) << " (prism of " << n << " sides "
+            << fmt(exact, 6) << "; bound to the cylinder "
+            << fmt(volume("cylinder 0, 0, 0 axis 1, 0, 0"), 6)
+            << "): " << check(std::abs(cad - exact) < 1e-6) << "\n";
+    }
+
+  // 6. bad input
   const std::vector<std::pair<std::string, std::string>> cases = {
     {"    set Manifolds = 21: sphere 0, 1.05\n",
      "binds tag 21, but the mesh file"},
     {"    set Manifolds = 20: sphere 0, 0\n", "the tag is not on this sphere"},
     {"    set Manifolds = 20: cylinder 0, 0, 0 axis 0, 0, 1\n",
      "In 2D a cylinder's section is a circle"},
-    {"    set Manifolds = 20 sphere 0, 1.05\n", "is no 'tag: sphere x, y'"}};
+    {"    set Manifolds = 20 sphere 0, 1.05\n", "is no 'tag: sphere x, y'"},
+    {"    set Manifolds = 20: cad none.step\n",
+     "the CAD file 'none.step' does not exist"},
+    {"    set Manifolds = 20: cad disc.msh\n",
+     "must be IGES (.iges, .igs) or STEP"},
+    {"    set Manifolds = 20: cad garbage.step\n",
+     "OpenCASCADE cannot read the CAD file"},
+    {"    set Manifolds = 20: cad wide.step\n", "the tag is not on it"},
+    {"    set Manifolds = 20: cad circle_mm.iges\n", "the tag is not on it"},
+    {"    set Manifolds = 20: cad circle.step scale 0\n",
+     "the scale must lie in (0, 1e15]"}};
+  copy_cad_file("wide.step");
+  if (this_rank() == 0)
+    std::ofstream("garbage.step") << "no STEP file\n";
+  MPI_Barrier(MPI_COMM_WORLD);
   for (const auto &[entry, fragment] : cases)
     log() << "refused, naming the binding: "
           << entry.substr(4, entry.size() - 5) << ": "

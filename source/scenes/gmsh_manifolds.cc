@@ -2,24 +2,83 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/opencascade/manifold_lib.h>
+#include <deal.II/opencascade/utilities.h>
 
 #include <dyncontact/base/input_checks.h>
 #include <dyncontact/scenes/gmsh_entries.h>
 #include <dyncontact/scenes/gmsh_scene.h>
 
+#include <BRep_Builder.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Vertex.hxx>
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 #include <string>
 
 
 // GmshScene's Manifolds: curved boundary tags that refine onto their
-// sphere or cylinder.
+// sphere, cylinder or CAD surface (OpenCASCADE).
 
 namespace dyncontact
 {
   using namespace GmshEntries;
+
+  namespace
+  {
+    /// The shape of an IGES or STEP file, its lengths times @p scale;
+    /// refused naming @p entry if it cannot be read or has no curve (2D)
+    /// or surface (3D).
+    template <int dim>
+    TopoDS_Shape
+    read_cad_file(const std::string &file,
+                  const double       scale,
+                  const std::string &entry)
+    {
+      // (OpenCASCADE reports every file it reads on std::cout, on every
+      // rank)
+      Message::DefaultMessenger()->RemovePrinters(
+        STANDARD_TYPE(Message_PrinterOStream));
+      std::string extension = std::filesystem::path(file).extension();
+      for (char &c : extension)
+        c = std::tolower(c);
+      TopoDS_Shape shape;
+      try
+        {
+          shape = (extension == ".step" || extension == ".stp") ?
+                    OpenCASCADE::read_STEP(file, scale) :
+                    OpenCASCADE::read_IGES(file, scale);
+        }
+      catch (const std::exception &)
+        {
+          shape.Nullify();
+        }
+      AssertThrow(!shape.IsNull(),
+                  ExcMessage("Scene/Gmsh/" + entry +
+                             ": OpenCASCADE cannot "
+                             "read the CAD file '" +
+                             file + "'."));
+      const auto [n_faces, n_edges, n_vertices] =
+        OpenCASCADE::count_elements(shape);
+      (void)n_vertices;
+      AssertThrow(dim == 2 ? n_edges > 0 : n_faces > 0,
+                  ExcMessage("Scene/Gmsh/" + entry + ": the CAD file '" + file +
+                             "' has no " + (dim == 2 ? "curve" : "surface") +
+                             "."));
+      return shape;
+    }
+  } // namespace
 
 
 
@@ -31,8 +90,8 @@ namespace dyncontact
     const std::string text = prm.get("Manifolds");
     const std::string form =
       "' is no 'tag: sphere x, y" + std::string(dim == 3 ? ", z" : "") + "'" +
-      (dim == 3 ? " or 'tag: cylinder x, y, z axis a, b, c'" : std::string()) +
-      ".";
+      (dim == 3 ? ", 'tag: cylinder x, y, z axis a, b, c'" : std::string()) +
+      " or 'tag: cad file [scale s]'.";
     for (const std::string &item : split_items(text, ';'))
       {
         if (item.empty())
@@ -47,6 +106,53 @@ namespace dyncontact
         std::string       rest  = Utilities::trim(item.substr(colon + 1));
         const std::size_t space = rest.find(' ');
         const std::string kind  = rest.substr(0, space);
+        for (const ManifoldBinding &other : manifolds)
+          AssertThrow(other.tag != *tags.begin(),
+                      ExcMessage("Scene/Gmsh/Manifolds binds tag " +
+                                 std::to_string(*tags.begin()) + " twice."));
+        if (kind == "cad" && space != std::string::npos)
+          {
+            // 'cad file [scale s]'
+            ManifoldBinding binding;
+            binding.tag             = *tags.begin();
+            rest                    = Utilities::trim(rest.substr(space + 1));
+            const std::size_t scale = rest.find(" scale ");
+            binding.cad_file        = Utilities::trim(rest.substr(0, scale));
+            const std::string entry = "Manifolds ('" + item + "')";
+            if (scale != std::string::npos)
+              {
+                const std::string text =
+                  Utilities::trim(rest.substr(scale + 7));
+                char *end         = nullptr;
+                binding.cad_scale = std::strtod(text.c_str(), &end);
+                AssertThrow(!text.empty() && *end == '\0' &&
+                              std::isfinite(binding.cad_scale) &&
+                              binding.cad_scale > 0. &&
+                              binding.cad_scale <= 1e15,
+                            ExcMessage("Scene/Gmsh/" + entry +
+                                       ": the scale must lie in (0, 1e15] "
+                                       "(m per length of the file)."));
+              }
+            std::string extension =
+              std::filesystem::path(binding.cad_file).extension();
+            for (char &c : extension)
+              c = std::tolower(c);
+            AssertThrow(extension == ".step" || extension == ".stp" ||
+                          extension == ".iges" || extension == ".igs",
+                        ExcMessage("Scene/Gmsh/" + entry +
+                                   ": the CAD file must be IGES (.iges, .igs) "
+                                   "or STEP (.step, .stp)."));
+            if (std::filesystem::path(binding.cad_file).is_relative() &&
+                !this->input_directory.empty())
+              binding.cad_file = (std::filesystem::path(this->input_directory) /
+                                  binding.cad_file)
+                                   .string();
+            AssertThrow(std::filesystem::is_regular_file(binding.cad_file),
+                        ExcMessage("Scene/Gmsh/" + entry + ": the CAD file '" +
+                                   binding.cad_file + "' does not exist."));
+            manifolds.push_back(binding);
+            continue;
+          }
         AssertThrow((kind == "sphere" || (dim == 3 && kind == "cylinder")) &&
                       space != std::string::npos,
                     ExcMessage("Scene/Gmsh/Manifolds: '" + item + form +
@@ -72,10 +178,6 @@ namespace dyncontact
                         ExcMessage("Scene/Gmsh/Manifolds: the axis of '" +
                                    item + "' must have a length > 0."));
           }
-        for (const ManifoldBinding &other : manifolds)
-          AssertThrow(other.tag != binding.tag,
-                      ExcMessage("Scene/Gmsh/Manifolds binds tag " +
-                                 std::to_string(binding.tag) + " twice."));
         manifolds.push_back(binding);
       }
   }
@@ -96,6 +198,11 @@ namespace dyncontact
                                ", but the mesh file '" + mesh_file +
                                "' has no boundary faces with that physical "
                                "tag."));
+        if (!binding.cad_file.empty())
+          {
+            attach_cad_surface(tria, binding);
+            continue;
+          }
         // the distance of a point from the centre or the axis
         Tensor<1, dim> axis = binding.axis;
         if (binding.cylinder)
@@ -145,6 +252,104 @@ namespace dyncontact
 
 
 
+  template <int dim>
+  void
+  GmshScene<dim>::attach_cad_surface(Triangulation<dim, dim> &tria,
+                                     const ManifoldBinding   &binding) const
+  {
+    const std::string entry = "Manifolds (tag " + std::to_string(binding.tag) +
+                              ": cad " + binding.cad_file + ")";
+    const TopoDS_Shape shape =
+      read_cad_file<dim>(binding.cad_file, binding.cad_scale, entry);
+    const double tolerance =
+      std::max(1e-7, OpenCASCADE::get_shape_tolerance(shape));
+    // the shape's surfaces (3D) or curves (2D): the tag is bound to those
+    // nearest to the centres of its faces, so that a new point near an
+    // edge of the shape is not drawn onto a neighbouring surface of the
+    // shape that the tag does not cover (a solid's end cap)
+    std::vector<TopoDS_Face>   cad_faces;
+    std::vector<TopoDS_Edge>   cad_edges;
+    std::vector<TopoDS_Vertex> cad_vertices;
+    OpenCASCADE::extract_geometrical_shapes(shape,
+                                            cad_faces,
+                                            cad_edges,
+                                            cad_vertices);
+    std::vector<TopoDS_Shape> pieces;
+    if (dim == 2)
+      pieces.assign(cad_edges.begin(), cad_edges.end());
+    else
+      pieces.assign(cad_faces.begin(), cad_faces.end());
+    std::vector<char> used(pieces.size(), 0);
+    // the tag's vertices on the surface: within 1e-3 of the size of the
+    // tag's faces
+    Point<dim> lower, upper;
+    bool       first    = true;
+    double     farthest = 0.;
+    Point<dim> worst;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == binding.tag)
+          {
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              {
+                const Point<dim> &x = cell->face(f)->vertex(v);
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    lower[d] = first ? x[d] : std::min(lower[d], x[d]);
+                    upper[d] = first ? x[d] : std::max(upper[d], x[d]);
+                  }
+                first = false;
+                const double distance =
+                  x.distance(OpenCASCADE::closest_point(shape, x, tolerance));
+                if (distance > farthest)
+                  {
+                    farthest = distance;
+                    worst    = x;
+                  }
+              }
+            cell->face(f)->set_all_manifold_ids(binding.tag);
+            // the piece nearest to the face's centre
+            const Point<dim> centre  = cell->face(f)->center();
+            double           nearest = std::numeric_limits<double>::max();
+            unsigned int     which   = 0;
+            for (unsigned int k = 0; k < pieces.size(); ++k)
+              {
+                const double distance = centre.distance(
+                  OpenCASCADE::closest_point(pieces[k], centre, tolerance));
+                if (distance < nearest)
+                  {
+                    nearest = distance;
+                    which   = k;
+                  }
+              }
+            if (!pieces.empty())
+              used[which] = 1;
+          }
+    const double       size = lower.distance(upper);
+    std::ostringstream where;
+    where << worst;
+    AssertThrow(farthest <= 1e-3 * size,
+                ExcMessage(
+                  "Scene/Gmsh/" + entry + ": the vertex (" + where.str() +
+                  ") of tag " + std::to_string(binding.tag) + " in '" +
+                  mesh_file + "' lies " + format_number(farthest) +
+                  " m from the CAD " + (dim == 2 ? "curve" : "surface") +
+                  " (at most 1e-3 of the tag's size, " + format_number(size) +
+                  " m): the tag is not on it (is the scale right?)."));
+    BRep_Builder    builder;
+    TopoDS_Compound bound;
+    builder.MakeCompound(bound);
+    for (unsigned int k = 0; k < pieces.size(); ++k)
+      if (used[k])
+        builder.Add(bound, pieces[k]);
+    tria.set_manifold(
+      binding.tag,
+      OpenCASCADE::NormalProjectionManifold<dim, dim>(bound, tolerance));
+  }
+
+
+
   // (the class is instantiated where it is registered, in gmsh_scene.cc)
   template void
   GmshScene<2>::parse_manifolds(ParameterHandler &);
@@ -156,4 +361,10 @@ namespace dyncontact
   template void
   GmshScene<3>::attach_manifolds(Triangulation<3, 3> &,
                                  const std::set<unsigned int> &) const;
+  template void
+  GmshScene<2>::attach_cad_surface(Triangulation<2, 2> &,
+                                   const ManifoldBinding &) const;
+  template void
+  GmshScene<3>::attach_cad_surface(Triangulation<3, 3> &,
+                                   const ManifoldBinding &) const;
 } // namespace dyncontact

@@ -245,9 +245,13 @@ namespace dyncontact
       "those of an adaptive mesh, puts the new boundary points on the "
       "surface, items separated by ';': 'tag: sphere x, y[, z]' (the "
       "centre, m) or 'tag: cylinder x, y, z axis a, b, c' (a point on the "
-      "axis, m, and its direction), e.g. '20: sphere 0, 0.5; 21: sphere 0, "
-      "0.5'. All vertices of the tag must lie at one distance "
-      "from the centre or the axis.");
+      "axis, m, and its direction), or 'tag: cad file [scale s]' (the "
+      "surface, in 2D the curve, of an IGES or STEP file through "
+      "OpenCASCADE, its lengths times s in m, default 1, e.g. 0.001 for a "
+      "file in mm; a relative file name is relative to the prm file), e.g. "
+      "'20: sphere 0, 0.5; 21: cad part.step'. All vertices of a sphere's "
+      "or a cylinder's tag must lie at one distance from the centre or the "
+      "axis, those of a CAD tag on its surface.");
     prm.declare_entry("Gravity",
                       "0, 0, 0",
                       Patterns::Anything(),

@@ -153,7 +153,7 @@ namespace dyncontact
     /// Binds the faces of each tag of Manifolds (and their edges) to its
     /// manifold, after checking that the tag is on the boundary (@p
     /// face_tags) and that all its vertices lie at one distance from the
-    /// centre or the axis.
+    /// centre or the axis (or on the CAD surface).
     void
     attach_manifolds(Triangulation<dim, dim>      &tria,
                      const std::set<unsigned int> &face_tags) const;
@@ -199,11 +199,21 @@ namespace dyncontact
     struct ManifoldBinding
     {
       unsigned int   tag;
-      bool           cylinder;
+      bool           cylinder = false;
       Point<dim>     point;
       Tensor<1, dim> axis;
+      /// a CAD file (IGES or STEP; empty: a sphere or cylinder) and the
+      /// factor from its lengths to m
+      std::string cad_file;
+      double      cad_scale = 1.;
     };
     std::vector<ManifoldBinding> manifolds;
+    /// attach_manifolds() for a CAD binding: reads the file, checks that
+    /// the tag's vertices lie on its surface (within 1e-3 of the tag's
+    /// size) and binds the tag to OpenCASCADE's normal projection.
+    void
+    attach_cad_surface(Triangulation<dim, dim> &tria,
+                       const ManifoldBinding   &binding) const;
     /// Per body (empty: none): the initial displacement and velocity as
     /// functions of x, y (, z).
     std::vector<std::shared_ptr<FunctionParser<dim>>> displacement_functions;
