@@ -16,6 +16,33 @@ namespace dyncontact
 {
   namespace
   {
+    /// @p text with every run of white space one space, and none beside
+    /// the separators , ; : = or at the ends of a line.
+    std::string
+    canonical_form(const std::string &text)
+    {
+      std::string out;
+      bool        space     = false;
+      const auto  separator = [](const char c) {
+        return c == ',' || c == ';' || c == ':' || c == '=' || c == '\n';
+      };
+      for (const char c : text)
+        {
+          if (c == ' ' || c == '\t' || c == '\r')
+            {
+              space = true;
+              continue;
+            }
+          if (space && !out.empty() && !separator(out.back()) && !separator(c))
+            out += ' ';
+          space = false;
+          out += c;
+        }
+      return out;
+    }
+
+
+
     /// What a resumed run may change (the entries parse_parameters() leaves
     /// out of the critical parameters).
     const std::string changeable_on_resume =
@@ -316,13 +343,15 @@ namespace dyncontact
       }
     AssertThrow(state.count("critical_parameters"), damaged);
 
-    // refuse a prm whose critical parameters differ
+    // refuse a prm whose critical parameters differ (in more than white
+    // space: '1e6, 2e6' and '1e6 ,2e6' are one list)
     const std::string &saved = state["critical_parameters"];
-    if (saved != critical_parameters)
+    if (canonical_form(saved) != canonical_form(critical_parameters))
       {
         std::istringstream a(saved), b(critical_parameters);
         std::string        la, lb;
-        while (std::getline(a, la) && std::getline(b, lb) && la == lb)
+        while (std::getline(a, la) && std::getline(b, lb) &&
+               canonical_form(la) == canonical_form(lb))
           ;
         AssertThrow(false,
                     ExcMessage("Checkpointing/Resume: this input differs from "

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -147,7 +148,13 @@ namespace dyncontact
           }
         catch (const std::exception &error)
           {
-            return message_of(error);
+            // (deal.II's column counts in the whole list of expressions
+            // that it hands muparser, not in this one: muparser's own
+            // position, which follows, is the one to read)
+            return std::regex_replace(message_of(error),
+                                      std::regex("Parsing Error at Column "
+                                                 "[0-9]+\\. "),
+                                      "");
           }
         catch (...)
           {
@@ -157,6 +164,8 @@ namespace dyncontact
       };
       auto function = std::make_shared<FunctionParser<dim>>(expressions.size());
       std::string problem = problem_of(*function, expressions);
+      if (!problem.empty() && expressions.size() == 1)
+        problem = "'" + expressions[0] + "': " + problem;
       // name the component that fails
       for (unsigned int d = 0;
            !problem.empty() && d < expressions.size() && expressions.size() > 1;

@@ -103,8 +103,11 @@ namespace dyncontact
       bool
       match(const std::string &text) const override
       {
-        const auto items = Utilities::split_string_list(text);
-        return !items.empty() &&
+        // (split_string_list() drops a last empty item: '1, 2,' would be
+        // a list of two)
+        const std::string trimmed = Utilities::trim(text);
+        const auto        items   = Utilities::split_string_list(text);
+        return !items.empty() && !trimmed.empty() && trimmed.back() != ',' &&
                std::all_of(
                  items.begin(), items.end(), [this](const std::string &item) {
                    char        *end   = nullptr;
