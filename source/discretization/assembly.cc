@@ -411,8 +411,16 @@ namespace dyncontact
     function_loads = scene.function_loads();
     if (!function_loads.empty())
       {
+        // the constant loads with the functions of x alone, once per mesh,
+        // and the functions of t at the present time
         constant_load = load;
-        assemble_function_loads(load_time, load);
+        VectorType of_x;
+        assemble_function_loads(load_time, false, of_x);
+        constant_load += of_x;
+        if (function_loads.time_dependent)
+          assemble_function_loads(load_time, true, load);
+        else
+          load = constant_load;
         if (function_loads.time_dependent)
           for (VectorType *v : {&previous_load, &end_load, &step_load})
             reinit_vector(*v);

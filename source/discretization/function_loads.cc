@@ -19,15 +19,22 @@ namespace dyncontact
   template <int dim>
   void
   SemiDiscreteSystem<dim>::assemble_function_loads(const double t,
+                                                   const bool   of_time,
                                                    VectorType  &f) const
   {
+    // (those of this part only)
+    const auto in_part = [&](const Function<dim> *function) {
+      return function != nullptr &&
+             function_loads.of_time.count(function) == (of_time ? 1 : 0);
+    };
     for (Function<dim> *function : function_loads.body_forces)
-      if (function != nullptr)
+      if (in_part(function))
         function->set_time(t);
     for (const auto &load_of_tag :
          {&function_loads.tractions, &function_loads.pressures})
       for (const auto &[id, function] : *load_of_tag)
-        function->set_time(t);
+        if (in_part(function))
+          function->set_time(t);
 
     const QGauss<dim>     quadrature(fe.degree + 1);
     const QGauss<dim - 1> face_quadrature(fe.degree + 1);
@@ -85,7 +92,7 @@ namespace dyncontact
               cell->material_id() < function_loads.body_forces.size() ?
                 function_loads.body_forces[cell->material_id()] :
                 nullptr;
-            if (force != nullptr)
+            if (in_part(force))
               {
                 values.reinit(cell);
                 force->vector_value_list(values.get_quadrature_points(),
@@ -109,7 +116,7 @@ namespace dyncontact
                   for (const auto *loads :
                        {&function_loads.tractions, &function_loads.pressures})
                     for (const auto &[load_id, function] : *loads)
-                      if (load_id == id)
+                      if (load_id == id && in_part(function))
                         {
                           // a traction, or a pressure's traction -p n
                           const bool is_pressure =
@@ -158,8 +165,13 @@ namespace dyncontact
     }
     function_part.compress(VectorOperation::add);
     stop_with_any_message(problem, comm);
-    f = constant_load;
-    f += function_part;
+    if (of_time)
+      {
+        f = constant_load;
+        f += function_part;
+      }
+    else
+      f = function_part;
   }
 
 
@@ -169,7 +181,7 @@ namespace dyncontact
   SemiDiscreteSystem<dim>::set_load_time(const double t)
   {
     if (function_loads.time_dependent && t != load_time)
-      assemble_function_loads(t, load);
+      assemble_function_loads(t, true, load);
     load_time = t;
   }
 
@@ -184,7 +196,7 @@ namespace dyncontact
       prescribed_values(t_end, prescribed->at_end);
     if (!function_loads.time_dependent)
       return;
-    assemble_function_loads(t_end, end_load);
+    assemble_function_loads(t_end, true, end_load);
     // the paper's F((u^n + u^{n+1})/2) with the trapezoidal mean of f
     step_load = load;
     step_load += end_load;
@@ -228,6 +240,7 @@ namespace dyncontact
 
 #define DYNCONTACT_INSTANTIATE(dim)                                            \
   template void SemiDiscreteSystem<dim>::assemble_function_loads(const double, \
+                                                                 const bool,   \
                                                                  VectorType &) \
     const;                                                                     \
   template void SemiDiscreteSystem<dim>::set_load_time(const double);          \

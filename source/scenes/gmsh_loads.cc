@@ -73,7 +73,8 @@ namespace dyncontact
     traction_functions.clear();
     pressure_functions.clear();
     body_force_functions.clear();
-    loads_of_time     = false;
+    loads_of_time = false;
+    load_functions_of_time.clear();
     const auto loaded = [&](const unsigned int tag) {
       return neumann_tags.count(tag) || tag_tractions.count(tag) ||
              traction_functions.count(tag) || pressure_functions.count(tag);
@@ -121,6 +122,8 @@ namespace dyncontact
         traction_functions[tag] =
           make_function<dim>(entry, components, constants, of_time);
         loads_of_time = loads_of_time || of_time;
+        if (of_time)
+          load_functions_of_time.insert(traction_functions[tag].get());
       }
 
     for (const auto &[tag, components] : load_items("Pressures"))
@@ -134,6 +137,8 @@ namespace dyncontact
         pressure_functions[tag] =
           make_function<dim>(entry, components, constants, of_time);
         loads_of_time = loads_of_time || of_time;
+        if (of_time)
+          load_functions_of_time.insert(pressure_functions[tag].get());
       }
 
     const std::string text = prm.get("Body force");
@@ -153,6 +158,8 @@ namespace dyncontact
             with_body["body"] = b + 1;
             body_force_functions.push_back(make_function<dim>(
               "Body force = '" + text + "'", expressions, with_body, of_time));
+            if (of_time)
+              load_functions_of_time.insert(body_force_functions.back().get());
           }
         loads_of_time = loads_of_time || of_time;
       }
@@ -214,6 +221,7 @@ namespace dyncontact
       loads.tractions.emplace_back(tag, f.get());
     for (const auto &[tag, f] : pressure_functions)
       loads.pressures.emplace_back(tag, f.get());
+    loads.of_time        = load_functions_of_time;
     loads.time_dependent = loads_of_time;
     return loads;
   }

@@ -513,10 +513,13 @@ namespace dyncontact
     /// over the boundary as the mesh represents it (in assembly.cc).
     std::vector<std::pair<types::boundary_id, Tensor<1, dim>>>
     boundary_tractions(const Scene<dim> &scene) const;
-    /// @p f = the constant load plus the function loads at time @p t (in
-    /// function_loads.cc).
+    /// @p f = the constant load plus the function loads that depend on t,
+    /// at time @p t (@p of_time; in function_loads.cc), or (not @p of_time)
+    /// the function loads that do not depend on t.
     void
-    assemble_function_loads(const double t, VectorType &f) const;
+    assemble_function_loads(const double t,
+                            const bool   of_time,
+                            VectorType  &f) const;
     /// A zero matrix on the graph.
     void
     reinit_matrix(MatrixType &matrix) const;
@@ -531,7 +534,8 @@ namespace dyncontact
     VectorType load;
     double     load_time = 0.;
     /// the scene's loads given as functions, and the constant part of f
-    /// (the scene's constant loads), kept where they change in time
+    /// (the scene's constant loads and its function loads that do not
+    /// depend on t)
     FunctionLoads<dim> function_loads;
     VectorType         constant_load;
     /// with loads that change in time: f at the start and the end of the

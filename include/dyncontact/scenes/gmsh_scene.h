@@ -230,9 +230,11 @@ namespace dyncontact
     std::map<unsigned int, std::shared_ptr<FunctionParser<dim>>>
       prescribed_functions;
     /// Whether one of these uses t.
-    bool           loads_of_time = false;
-    Tensor<1, dim> traction;
-    Tensor<1, dim> gravity;
+    bool loads_of_time = false;
+    /// the load functions above that depend on t
+    std::set<const Function<dim> *> load_functions_of_time;
+    Tensor<1, dim>                  traction;
+    Tensor<1, dim>                  gravity;
   };
 } // namespace dyncontact
 

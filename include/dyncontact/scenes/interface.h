@@ -137,9 +137,9 @@ namespace dyncontact
    * traction (Pa, dim components) or a normal pressure (Pa, one component,
    * positive pushing into the body: the traction -p n) per boundary id.
    * They add to the constant loads (Scene::body_force(),
-   * neumann_tractions()). With @p time_dependent, the system evaluates
-   * them at every step's end (doc/algorithms.md, "Loads that change in
-   * time"); else once per mesh.
+   * neumann_tractions()). Those in @p of_time (which depend on t) the
+   * system evaluates at every step's end (doc/algorithms.md, "Loads that
+   * change in time"), the others once per mesh.
    */
   template <int dim>
   struct FunctionLoads
@@ -147,6 +147,9 @@ namespace dyncontact
     std::vector<Function<dim> *>                                body_forces;
     std::vector<std::pair<types::boundary_id, Function<dim> *>> tractions;
     std::vector<std::pair<types::boundary_id, Function<dim> *>> pressures;
+    /// the functions above that depend on t
+    std::set<const Function<dim> *> of_time;
+    /// whether any of them depends on t
     bool time_dependent = false;
 
     bool
