@@ -10,7 +10,9 @@
 //    traction (0, -p(t)) of Neumann tractions gives the same run.
 // 2. A free block under the body force (0, -c t): its momentum is
 //    -c |V| t^2 / 2 exactly (the step's load is the trapezoidal mean
-//    (f^n + f^{n+1}) / 2; f^n alone would miss it by tau / t = 10 %).
+//    (f^n + f^{n+1}) / 2; f^n alone would miss it by tau / t = 10 %); with
+//    a traction of x alone on its top beside it (assembled once per mesh),
+//    its momentum along x grows by that traction's force exactly.
 // 3. Symmetry: a block dropped onto the rigid obstacle under a pressure
 //    symmetric in x, modelled whole ([-1, 1] wide) and as the half [0, 1]
 //    on a roller at x = 0: the half has half of every energy and the same
@@ -84,6 +86,24 @@ main(int argc, char **argv)
     log() << "free block: momentum_y at t = " << fmt(t) << " s " << fmt(p, 6)
           << ", exact -c V t^2/2 = " << fmt(-3. * 0.5 * t * t / 2., 6) << ": "
           << check(std::abs(p + 3. * 0.5 * t * t / 2.) < 1e-12) << "\n";
+    // with a traction of x alone on its top beside it (assembled once per
+    // mesh, the body force at every step): the force int q (1 + x) dx =
+    // 1.5 q along x as well
+    const Statistics both =
+      run(prm("free.msh",
+              "    set Body force = 0; -c*t\n"
+              "    set Neumann tractions = 11: q*(1 + x), 0\n"
+              "    set Function constants = c = 3, q = 2\n",
+              "0.1",
+              "subsection Material\n  set Young's modulus = 100\nend\n"));
+    const double px = both.column("momentum_x").back();
+    const double py = both.column("momentum_y").back();
+    log() << "with a traction q (1 + x) on its top: momentum_x " << fmt(px, 6)
+          << ", exact 1.5 q t = " << fmt(3. * t, 6) << ", momentum_y "
+          << fmt(py, 6) << ": "
+          << check(std::abs(px - 3. * t) < 1e-12 &&
+                   std::abs(py + 3. * 0.5 * t * t / 2.) < 1e-12)
+          << "\n";
   }
 
   // 3. the whole block and its half on a roller
