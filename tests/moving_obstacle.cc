@@ -19,8 +19,13 @@
 //   time: the force E d H / L = 0.001 N/m;
 // - a run resumed from its checkpoint repeats the uninterrupted one (its
 //   Obstacles written with other white space);
+// - static, a disc pressed into a block presses the same whether it slid
+//   one radius on its way or was put there (the rows are linearised where
+//   the disc is); with a plane at an angle pushing the bar on rollers
+//   E + W_visc - W_obs never rises (the multiplier read from the free
+//   component: read from both, it rose by 4e-5 of the energy);
 // - refused: a motion that uses x, a motion with one component in 2D, a
-//   motion that is not finite at some time (named at that time).
+//   motion that is not finite at some time (named at that time), rand().
 
 #include "tests.h"
 
@@ -146,6 +151,61 @@ main(int argc, char **argv)
           << "\n";
   }
 
+  // 3b. a disc pressed 0.01 m into a block: static, the path does not
+  // matter (the rows are linearised where the disc is at End time), so a
+  // disc that slides 0.05 m (one radius) on its way presses as one put
+  // there
+  {
+    write_block_msh("block.msh",
+                    {{-0.2, 0.2, 0., 0.1, 40, 10, 1, 12, 13, 0, 0}});
+    const auto force = [&](const std::string &motion) {
+      return run("set Dimension = 2\nset Output directory = results-disc\n" +
+                 scene_prm("gmsh",
+                           "    set Mesh file = block.msh\n"
+                           "    set Bodies = 1\n    set Contact tags = 13\n"
+                           "    set Contact pairs = 1 : obstacle\n"
+                           "    set Obstacles = sphere 0, 0.15 radius 0.05 "
+                           "moving " +
+                             motion + "\n    set Dirichlet tags = 12\n") +
+                 "subsection Contact\n  set Search radius = 0.5\nend\n"
+                 "subsection Material\n  set Young's modulus = 1000\n"
+                 "  set Poisson's ratio = 0.3\nend\n"
+                 "subsection Time integration\n  set Scheme = static\n"
+                 "  set End time = 1\nend\n"
+                 "subsection Output\n  set Write vtu = false\nend\n")
+        .column("contact_force")
+        .back();
+    };
+    const double slid = force("0.05*t, -0.01*t"), put = force("0.05, -0.01*t");
+    log() << "static, a disc slid 0.05 m on its way presses as one put "
+             "there: "
+          << fmt(slid, 4) << " and " << fmt(put, 4)
+          << " N/m: " << check(std::abs(slid - put) < 1e-8 * put && put > 1.)
+          << "\n";
+  }
+
+  // 3c. a plane at an angle pushes the bar on rollers (y held at the
+  // contact nodes): the force along the normal is read from the free
+  // component, and E + W_visc - W_obs never rises (its nodes come into
+  // contact one after the other: it falls at each)
+  {
+    const Statistics s      = run(bar_prm(
+      "plane -0.02, 0.05 normal 1, 0.3 moving v*t, 0", "N-CS++", "0.8"));
+    const auto       energy = s.column("energy_total"),
+               work         = s.column("work_obstacles"),
+               balance      = s.column("energy_balance");
+    double increase = 0., scale = 0.;
+    for (unsigned int r = 0; r < energy.size(); ++r)
+      {
+        scale = std::max(scale, energy[r] + std::abs(work[r]));
+        if (r > 0)
+          increase = std::max(increase, balance[r] - balance[r - 1]);
+      }
+    log() << "a plane at an angle, the contact nodes on rollers: "
+             "E + W_visc - W_obs never rises (1e-10 of the energy): "
+          << check(increase < 1e-10 * scale && work.back() > 0.) << "\n";
+  }
+
   // 4. resumed from a checkpoint
   {
     const auto checkpointed = [&](const std::string &end, const bool resume) {
@@ -180,7 +240,8 @@ main(int argc, char **argv)
     {"plane 0, 0 normal 1, 0 moving v*x, 0", "uses x, y or z"},
     {"plane 0, 0 normal 1, 0 moving v*t", "'moving' has 1 components"},
     {"plane 0, 0 normal 1, 0 moving 0.01*t/(0.5 - t), 0",
-     "The motion of obstacle 1 (Scene/Gmsh/Obstacles, 'moving') is inf m"}};
+     "The motion of obstacle 1 (Scene/Gmsh/Obstacles, 'moving') is inf m"},
+    {"plane 0, 0 normal 1, 0 moving 0.01*rand(), 0", "uses rand()"}};
   for (const auto &[obstacle, fragment] : cases)
     {
       const std::string message = error_of(bar_prm(obstacle, "N-CS++", "0.8"));

@@ -185,9 +185,23 @@ namespace dyncontact
       {
         const ContactRow &row = rows->rows[p];
         multipliers[p]        = 0.;
-        if (active[p])
-          for (unsigned int c = 0; c < row.n_components; ++c)
+        if (!active[p])
+          continue;
+        // a component that Dirichlet data hold (a roller) carries their
+        // reaction too: the force mu nu is then read from the free
+        // components alone, mu = sum nu_c R_c / sum nu_c^2 over them
+        bool   held      = false;
+        double free_norm = 0.;
+        for (unsigned int c = 0; c < row.n_components; ++c)
+          if (row.free[c])
+            free_norm += row.normal[c] * row.normal[c];
+          else
+            held = held || std::abs(row.normal[c]) > 1e-12;
+        for (unsigned int c = 0; c < row.n_components; ++c)
+          if (!held || row.free[c])
             multipliers[p] += row.normal[c] * ghosted(row.entries[c].first);
+        if (held)
+          multipliers[p] /= free_norm;
       }
   }
 

@@ -96,8 +96,7 @@ namespace dyncontact
             row.normal[d]   = -normal[d];
             row.position[d] = x[d];
           }
-        row.gap           = gap;
-        row.reference_gap = gap;
+        row.gap = gap;
         AssertThrow(std::isfinite(row.gap),
                     ExcMessage("The gap of the node at (" +
                                Utilities::to_string(x[0]) + ", " +

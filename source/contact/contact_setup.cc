@@ -290,13 +290,26 @@ namespace dyncontact
         {
           rows.motions.resize(pairs.size() + obstacles.size());
           const RigidObstacle<dim> obstacle = obstacles[k];
-          rows.motions[pairs.size() + k]    = [obstacle, k](const double t) {
+          auto                    &motion   = rows.motions[pairs.size() + k];
+          motion.displacement               = [obstacle, k](const double t) {
             const Tensor<1, dim> d = obstacle.displacement(t, k + 1) -
                                      obstacle.displacement(0., k + 1);
             std::array<double, 3> shift{{0., 0., 0.}};
             for (unsigned int c = 0; c < dim; ++c)
               shift[c] = d[c];
             return shift;
+          };
+          motion.gap_and_normal = [obstacle, k](const std::array<double, 3> &x,
+                                                const double t) {
+            Point<dim> y;
+            for (unsigned int c = 0; c < dim; ++c)
+              y[c] = x[c];
+            const auto [gap, n] =
+              obstacle.gap_and_normal(y - obstacle.displacement(t, k + 1));
+            std::array<double, 3> normal{{0., 0., 0.}};
+            for (unsigned int c = 0; c < dim; ++c)
+              normal[c] = n[c];
+            return std::make_pair(gap, normal);
           };
         }
     set_obstacle_time(obstacle_time);
@@ -424,10 +437,11 @@ namespace dyncontact
         if (std::abs(row.normal[d]) > 1e-12 &&
             rows_system->is_prescribed(row.entries[d].first))
           moving_contact_nodes = true;
+    for (unsigned int d = 0; d < dim; ++d)
+      row.free[d] = !constraints.is_constrained(row.entries[d].first);
     int best = -1;
     for (unsigned int d = 0; d < dim; ++d)
-      if (!constraints.is_constrained(row.entries[d].first) &&
-          std::abs(row.normal[d]) > 1e-12 &&
+      if (row.free[d] && std::abs(row.normal[d]) > 1e-12 &&
           (best < 0 || std::abs(row.normal[d]) > std::abs(row.normal[best])))
         best = d;
     row.eliminated = std::max(best, 0);

@@ -195,12 +195,22 @@ namespace dyncontact
                 << std::setprecision(3) << "   warning: step " << step
                 << " (t = " << this->get_control().get_time()
                 << " s): E + W_visc" << (theta() > 0. ? " + W_num" : "")
-                << " grew by " << balance - previous_balance << " J ("
+                << (loads_change() ? " - W_load" : "")
+                << (moves() ? " - W_D" : "")
+                << (obstacles_move() ? " - W_obs" : "") << " grew by "
+                << balance - previous_balance << " J ("
                 << 100. * (balance - previous_balance) / scale
                 << "% of the energy), which Theorem 3.2 excludes. The "
                    "linear solver stops too early for this problem (e.g. a "
                    "viscosity that dominates the step matrix): lower "
                    "'Contact solver/Linear solver tolerance'."
+                << (curved_obstacle_moves() ?
+                      " Or: a curved rigid obstacle moves, whose constraint "
+                      "is linearised at each node's reference position; "
+                      "its normal turns along the path, and the balance "
+                      "holds only up to that linearisation "
+                      "(doc/algorithms.md, \"Rigid obstacles that move\")." :
+                      "")
                 << (n_increases == 3 ? " (Further such warnings are not "
                                        "printed; see the column "
                                        "energy_balance.)" :
@@ -312,6 +322,17 @@ namespace dyncontact
       {
         for (const auto &obstacle : this->get_scene().obstacles())
           if (obstacle.motion != nullptr)
+            return true;
+        return false;
+      }
+
+      /// Whether a rigid obstacle that is no half-space moves.
+      bool
+      curved_obstacle_moves() const
+      {
+        for (const auto &obstacle : this->get_scene().obstacles())
+          if (obstacle.motion != nullptr &&
+              obstacle.shape != RigidObstacle<dim>::Shape::half_space)
             return true;
         return false;
       }

@@ -163,6 +163,15 @@ namespace dyncontact
         return std::string();
       };
       auto function = std::make_shared<FunctionParser<dim>>(expressions.size());
+      // (muparser's rand() differs between evaluations and ranks)
+      for (const std::string &expression : expressions)
+        AssertThrow(!std::regex_search(expression,
+                                       std::regex("(^|[^A-Za-z0-9_])rand"
+                                                  "[ ]*\\(")),
+                    ExcMessage("Scene/Gmsh/" + entry + ": '" + expression +
+                               "' uses rand(), whose values differ from one "
+                               "evaluation and one MPI rank to the next; "
+                               "give a function of x, y, z and t."));
       std::string problem = problem_of(*function, expressions);
       if (!problem.empty() && expressions.size() == 1)
         problem = "'" + expressions[0] + "': " + problem;

@@ -19,21 +19,15 @@ namespace dyncontact
 
   namespace
   {
-    /// With rigid obstacles that move: this rank's gaps g_p(t) - g_p(s),
-    /// the rows' gaps left at time @p t (doc/algorithms.md, "Rigid
-    /// obstacles that move").
+    /// With rigid obstacles that move: this rank's rows at time @p t, and
+    /// the obstacles' motion from @p s to @p t along their normals,
+    /// nu_p . (d(t) - d(s)) (doc/algorithms.md, "Rigid obstacles that
+    /// move").
     std::vector<double>
     gap_change(const StepOperators &ops, const double s, const double t)
     {
-      const auto &rows = ops.contact_rows().rows;
-      ops.constraints_at(s);
-      std::vector<double> change(rows.size());
-      for (unsigned int p = 0; p < rows.size(); ++p)
-        change[p] = -rows[p].gap;
       ops.constraints_at(t);
-      for (unsigned int p = 0; p < rows.size(); ++p)
-        change[p] += rows[p].gap;
-      return change;
+      return ops.contact_rows().normal_motion(s, t);
     }
 
 

@@ -44,9 +44,10 @@ namespace dyncontact
                       "2.5",
                       Patterns::Double(0.),
                       "Final time T, in s (>= 0). If T is not a multiple of "
-                      "tau, the last step ends after T. Not used by the "
-                      "static scheme (no time: its solution is at t = 1, the "
-                      "load factor).");
+                      "tau, the last step ends after T. The static scheme "
+                      "has no time (its solution is at t = 1, the load "
+                      "factor) but takes loads, prescribed displacements and "
+                      "obstacle motions that are functions of t at T.");
     prm.declare_entry("Time step",
                       "0.0125",
                       Patterns::Double(0.),

@@ -4,6 +4,7 @@
 #include <deal.II/base/types.h>
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <utility>
 #include <vector>
@@ -34,9 +35,8 @@ namespace dyncontact
     /// The gap g_p (eq. 2) in m; against a rigid obstacle that moves, at
     /// the time of ContactRows::set_time().
     double gap = 0.;
-    /// Against a rigid obstacle that moves: the gap at the obstacle's
-    /// position d(0) (m).
-    double reference_gap = 0.;
+    /// Which slave components no other constraint (Dirichlet data) holds.
+    std::array<bool, 3> free{{true, true, true}};
     /// The boundary weight w_p = int_{Gamma_C} psi_p ds (m^{d-1}).
     double weight = 0.;
     /// The contact pair of the row: its index in Scene::contact_pairs(); the
@@ -74,10 +74,21 @@ namespace dyncontact
   {
     std::vector<ContactRow> rows;
 
-    /// Rigid obstacles that move: per pair index, d(t) - d(0) of the
-    /// obstacle of that pair (an empty function for the pairs that do not
-    /// move); empty if none moves.
-    std::vector<std::function<std::array<double, 3>(double)>> motions;
+    /// A rigid obstacle that moves: its displacement d(t) - d(0) (m), and
+    /// the gap of a point to it at time t with its outward unit normal
+    /// there (RigidObstacle::gap_and_normal() of the moved obstacle).
+    struct ObstacleMotion
+    {
+      std::function<std::array<double, 3>(double)> displacement;
+      std::function<
+        std::pair<double, std::array<double, 3>>(const std::array<double, 3> &,
+                                                 double)>
+        gap_and_normal;
+    };
+
+    /// Per pair index, the motion of the obstacle of that pair (empty
+    /// functions for the pairs that do not move); empty if none moves.
+    std::vector<ObstacleMotion> motions;
 
     /// Counts the changes of the gaps by set_time() (the active-set
     /// solvers' constraints are made anew after one).
@@ -90,24 +101,58 @@ namespace dyncontact
       return !motions.empty();
     }
 
-    /// The gaps of the rows against moving obstacles at time @p t:
-    /// g_p(t) = g_p(0) + nu_p . (d(t) - d(0)) (the obstacle moved by
-    /// d(t) - d(0) opens the gap along nu_p, which points into it).
+    /// The rows against moving obstacles at time @p t: the gap and the
+    /// normal of the node's reference position to the obstacle where it
+    /// is at t (the constraint linearised there), and the eliminated
+    /// component the free one with the largest |nu_i|.
     void
     set_time(const double t)
     {
       ++gap_version;
+      for (ContactRow &row : rows)
+        if (row.pair < motions.size() && motions[row.pair].gap_and_normal)
+          {
+            const auto [gap, n] =
+              motions[row.pair].gap_and_normal(row.position, t);
+            row.gap = gap;
+            // (no normal on a ball's centre or a cylinder's axis: the
+            // row keeps its last one)
+            if (n[0] == 0. && n[1] == 0. && n[2] == 0.)
+              continue;
+            int best = -1;
+            for (unsigned int c = 0; c < row.n_components; ++c)
+              {
+                row.normal[c]         = -n[c];
+                row.entries[c].second = -n[c];
+                if (row.free[c] && std::abs(n[c]) > 1e-12 &&
+                    (best < 0 || std::abs(n[c]) > std::abs(n[best])))
+                  best = c;
+              }
+            if (best >= 0)
+              row.eliminated = best;
+          }
+    }
+
+    /// nu_p . (d(t) - d(s)) of each row against a moving obstacle (zero
+    /// for the others): the obstacle's motion along the row's normal.
+    std::vector<double>
+    normal_motion(const double s, const double t) const
+    {
+      std::vector<double>                motion(rows.size(), 0.);
       std::vector<std::array<double, 3>> d(motions.size());
       for (unsigned int k = 0; k < motions.size(); ++k)
-        if (motions[k])
-          d[k] = motions[k](t);
-      for (ContactRow &row : rows)
-        if (row.pair < motions.size() && motions[row.pair])
+        if (motions[k].displacement)
           {
-            row.gap = row.reference_gap;
-            for (unsigned int c = 0; c < row.n_components; ++c)
-              row.gap += row.normal[c] * d[row.pair][c];
+            const auto a = motions[k].displacement(s),
+                       b = motions[k].displacement(t);
+            for (unsigned int c = 0; c < 3; ++c)
+              d[k][c] = b[c] - a[c];
           }
+      for (unsigned int p = 0; p < rows.size(); ++p)
+        if (rows[p].pair < motions.size() && motions[rows[p].pair].displacement)
+          for (unsigned int c = 0; c < rows[p].n_components; ++c)
+            motion[p] += rows[p].normal[c] * d[rows[p].pair][c];
+      return motion;
     }
 
     std::size_t

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -72,13 +73,17 @@ namespace dyncontact
       for (unsigned int c = 0; c < dim; ++c)
         {
           d[c] = motion->value(Point<dim>(), c);
-          AssertThrow(std::isfinite(d[c]) && std::abs(d[c]) <= 1e15,
-                      ExcMessage("The motion of obstacle " + std::to_string(k) +
-                                 " (Scene/Gmsh/Obstacles, 'moving') is " +
-                                 std::to_string(d[c]) + " m in component " +
-                                 std::to_string(c) +
-                                 " at t = " + std::to_string(t) +
-                                 " s: it must be finite and at most 1e15 m."));
+          if (!(std::isfinite(d[c]) && std::abs(d[c]) <= 1e15))
+            {
+              std::ostringstream text;
+              text << "The motion of obstacle " << k
+                   << " (Scene/Gmsh/Obstacles, 'moving') is " << d[c]
+                   << " m in component " << c + 1 << " at t = " << t
+                   << " s: it must be finite and at most 1e15 m (N-CS++ "
+                      "takes it at t_{n+1} + tau, one step beyond End time "
+                      "in its last step).";
+              AssertThrow(false, ExcMessage(text.str()));
+            }
         }
       return d;
     }
