@@ -19,19 +19,24 @@
 // - Resumed from a checkpoint written after the adaptation, the run ends
 //   as the uninterrupted one.
 // - The same circle as a CAD curve (OpenCASCADE; tests/cad): a STEP file
-//   in m and an IGES file in mm with 'scale 0.001' give the polygons'
-//   areas (to the CAD tolerance, 1e-6), the adaptive mesh its exact area,
-//   and a resumed run the uninterrupted one's statistics.
+//   declared in m, an IGES file declared in mm (the file's unit is
+//   honoured) and a STEP file declared in mm whose numbers are metres
+//   with 'scale 1000' give the polygons' areas (to the CAD tolerance,
+//   1e-6), the adaptive mesh its exact area, and a resumed run the
+//   uninterrupted one's statistics.
 // - 3D: a cylinder of five hexahedra whose mantle is bound to the mantle
 //   of a solid CAD cylinder: refined once and twice, the volume of the
 //   prism of 8 and 16 sides (to 1e-6), as with the built-in cylinder
 //   binding (the solid's end caps, nearer to the midpoints of the rim's
-//   edges, would draw those onto the caps: 1.31 instead of 1.41).
+//   edges, would draw those onto the caps: 1.31 instead of 1.41). The end
+//   caps bound too, first: the rim's 8 edges follow the mantle, the later
+//   binding, and the run names the edges the two tags share.
 // - Bad input: a tag that is not on the boundary, a centre that the tag's
 //   faces are not around, a cylinder in 2D, an item that is no binding; a
-//   CAD file that does not exist, is no IGES or STEP, cannot be read, or
-//   whose curve the tag is not on (a circle of radius 2, or the IGES file
-//   without its scale), and a scale of 0.
+//   CAD file that does not exist, is a folder, is no IGES or STEP, cannot
+//   be read, or whose curve the tag is not on (a circle of radius 2, or
+//   the file declared in mm without its scale), a scale of 0 and one that
+//   is no number.
 
 #include <filesystem>
 
@@ -180,11 +185,14 @@ main(int argc, char **argv)
            "(largest difference < 1e-10): "
         << check(resumed_difference(bound, adapted) < 1e-10) << "\n";
 
-  // 4. the circle as a CAD curve, in m (STEP) and in mm (IGES)
+  // 4. the circle as a CAD curve, in m (STEP) and in mm (IGES), and in a
+  // file whose declared unit (mm) is not that of its numbers (m)
   copy_cad_file("circle.step");
   copy_cad_file("circle_mm.iges");
-  for (const std::string cad :
-       {"20: cad circle.step", "20: cad circle_mm.iges scale 0.001"})
+  copy_cad_file("circle_unit_mm.step");
+  for (const std::string cad : {"20: cad circle.step",
+                                "20: cad circle_mm.iges",
+                                "20: cad circle_unit_mm.step scale 1000"})
     {
       const std::string binding = "    set Manifolds = " + cad + "\n";
       bool              exact   = true;
@@ -244,6 +252,37 @@ main(int argc, char **argv)
             << fmt(volume("cylinder 0, 0, 0 axis 1, 0, 0"), 6)
             << "): " << check(std::abs(cad - exact) < 1e-6) << "\n";
     }
+  // the end caps bound too: the rim's edges follow the later binding, and
+  // the run says so; listed first, the caps leave the rim to the mantle
+  {
+    const std::string file = "caps_first.prm";
+    if (this_rank() == 0)
+      std::ofstream(file)
+        << "set Dimension = 3\nset Output directory = results-caps\n"
+        << scene_prm("gmsh",
+                     "    set Mesh file = cylinder.msh\n"
+                     "    set Initial velocity of body 1 = 0, -1, 0\n"
+                     "    set Manifolds = 12: cad cylinder.step; 11: cad "
+                     "cylinder.step\n")
+        << "subsection Mesh\n  set Initial global refinements = 1\nend\n"
+        << "subsection Time integration\n  set Time step = 0.01\n"
+        << "  set End time = 0.01\nend\n"
+        << "subsection Output\n  set Write vtu = false\nend\n";
+    MPI_Barrier(MPI_COMM_WORLD);
+    const Outcome outcome    = run_in_process(file);
+    const double  caps_first = -read_statistics("results-caps/statistics.tsv")
+                                 .column("momentum_y")
+                                 .back();
+    log() << "3D, the end caps bound first: volume " << fmt(caps_first, 6)
+          << " (prism 1.41421), and the shared edges named: "
+          << check(outcome.status == 0 &&
+                   std::abs(caps_first - 2. * 4 * std::sin(M_PI / 4) * 0.25) <
+                     1e-6 &&
+                   outcome.text.find("binds tags 11 and 12, whose faces "
+                                     "share 8 edges: new points on them "
+                                     "follow tag 11") != std::string::npos)
+          << "\n";
+  }
 
   // 6. bad input
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -260,12 +299,19 @@ main(int argc, char **argv)
     {"    set Manifolds = 20: cad garbage.step\n",
      "OpenCASCADE cannot read the CAD file"},
     {"    set Manifolds = 20: cad wide.step\n", "the tag is not on it"},
-    {"    set Manifolds = 20: cad circle_mm.iges\n", "the tag is not on it"},
+    {"    set Manifolds = 20: cad circle_unit_mm.step\n",
+     "the tag is not on it"},
     {"    set Manifolds = 20: cad circle.step scale 0\n",
-     "the scale must lie in (0, 1e15]"}};
+     "the scale must lie in (0, 1e15]"},
+    {"    set Manifolds = 20: cad circle.step scale 1 m\n",
+     "the scale '1 m' is no number"},
+    {"    set Manifolds = 20: cad folder.step\n", "is no regular file"}};
   copy_cad_file("wide.step");
   if (this_rank() == 0)
-    std::ofstream("garbage.step") << "no STEP file\n";
+    {
+      std::ofstream("garbage.step") << "no STEP file\n";
+      std::filesystem::create_directories("folder.step");
+    }
   MPI_Barrier(MPI_COMM_WORLD);
   for (const auto &[entry, fragment] : cases)
     log() << "refused, naming the binding: "

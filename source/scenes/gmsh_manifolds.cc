@@ -24,6 +24,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -37,9 +38,10 @@ namespace dyncontact
 
   namespace
   {
-    /// The shape of an IGES or STEP file, its lengths times @p scale;
-    /// refused naming @p entry if it cannot be read or has no curve (2D)
-    /// or surface (3D).
+    /// The shape of an IGES or STEP file in m (OpenCASCADE converts the
+    /// file's declared length unit to mm, deal.II then by 1e-3 to m), its
+    /// lengths times @p scale; refused naming @p entry if it cannot be
+    /// read or has no curve (2D) or surface (3D).
     template <int dim>
     TopoDS_Shape
     read_cad_file(const std::string &file,
@@ -57,8 +59,8 @@ namespace dyncontact
       try
         {
           shape = (extension == ".step" || extension == ".stp") ?
-                    OpenCASCADE::read_STEP(file, scale) :
-                    OpenCASCADE::read_IGES(file, scale);
+                    OpenCASCADE::read_STEP(file, 1e-3 * scale) :
+                    OpenCASCADE::read_IGES(file, 1e-3 * scale);
         }
       catch (const std::exception &)
         {
@@ -125,13 +127,18 @@ namespace dyncontact
                   Utilities::trim(rest.substr(scale + 7));
                 char *end         = nullptr;
                 binding.cad_scale = std::strtod(text.c_str(), &end);
-                AssertThrow(!text.empty() && *end == '\0' &&
-                              std::isfinite(binding.cad_scale) &&
+                AssertThrow(!text.empty() && *end == '\0',
+                            ExcMessage("Scene/Gmsh/" + entry + ": the scale '" +
+                                       text +
+                                       "' is no number (a file name with ' "
+                                       "scale ' in it cannot be given)."));
+                AssertThrow(std::isfinite(binding.cad_scale) &&
                               binding.cad_scale > 0. &&
                               binding.cad_scale <= 1e15,
                             ExcMessage("Scene/Gmsh/" + entry +
                                        ": the scale must lie in (0, 1e15] "
-                                       "(m per length of the file)."));
+                                       "(a factor on the lengths of the "
+                                       "file in its declared unit)."));
               }
             std::string extension =
               std::filesystem::path(binding.cad_file).extension();
@@ -147,9 +154,12 @@ namespace dyncontact
               binding.cad_file = (std::filesystem::path(this->input_directory) /
                                   binding.cad_file)
                                    .string();
-            AssertThrow(std::filesystem::is_regular_file(binding.cad_file),
+            AssertThrow(std::filesystem::exists(binding.cad_file),
                         ExcMessage("Scene/Gmsh/" + entry + ": the CAD file '" +
                                    binding.cad_file + "' does not exist."));
+            AssertThrow(std::filesystem::is_regular_file(binding.cad_file),
+                        ExcMessage("Scene/Gmsh/" + entry + ": the CAD file '" +
+                                   binding.cad_file + "' is no regular file."));
             manifolds.push_back(binding);
             continue;
           }
@@ -190,6 +200,41 @@ namespace dyncontact
     Triangulation<dim, dim>      &tria,
     const std::set<unsigned int> &face_tags) const
   {
+    // (3D) edges that faces of two bound tags share: each binding sets the
+    // manifold of its faces' edges, so the later binding's wins there
+    if (dim == 3 && manifolds.size() > 1)
+      {
+        std::set<unsigned int> bound;
+        for (const ManifoldBinding &binding : manifolds)
+          bound.insert(binding.tag);
+        std::map<unsigned int, std::set<unsigned int>> tags_of_line;
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                bound.count(cell->face(f)->boundary_id()))
+              for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+                tags_of_line[cell->face(f)->line_index(l)].insert(
+                  cell->face(f)->boundary_id());
+        std::map<std::pair<unsigned int, unsigned int>, unsigned int> shared;
+        for (const auto &[line, tags] : tags_of_line)
+          if (tags.size() > 1)
+            ++shared[{*tags.begin(), *tags.rbegin()}];
+        if (Utilities::MPI::this_mpi_process(tria.get_communicator()) == 0)
+          for (const auto &[pair, n] : shared)
+            {
+              unsigned int later = pair.second;
+              for (const ManifoldBinding &binding : manifolds)
+                if (binding.tag == pair.first || binding.tag == pair.second)
+                  later = binding.tag;
+              std::cout << "   warning: Scene/Gmsh/Manifolds binds tags "
+                        << pair.first << " and " << pair.second
+                        << ", whose faces share " << n
+                        << " edges: new points on them follow tag " << later
+                        << ", the later binding. List the curved surface "
+                           "last, or leave a flat one unbound."
+                        << std::endl;
+            }
+      }
     for (const ManifoldBinding &binding : manifolds)
       {
         AssertThrow(face_tags.count(binding.tag),
