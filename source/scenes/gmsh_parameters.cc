@@ -247,8 +247,10 @@ namespace dyncontact
       "centre, m) or 'tag: cylinder x, y, z axis a, b, c' (a point on the "
       "axis, m, and its direction), or 'tag: cad file [scale s]' (the "
       "surface, in 2D the curve, of an IGES or STEP file through "
-      "OpenCASCADE, its lengths times s in m, default 1, e.g. 0.001 for a "
-      "file in mm; a relative file name is relative to the prm file), e.g. "
+      "OpenCASCADE, read in m from the file's declared length unit, its "
+      "lengths then times s, default 1, e.g. 1000 for numbers in m that the "
+      "file declares as mm; a relative file name is relative to the prm "
+      "file), e.g. "
       "'20: sphere 0, 0.5; 21: cad part.step'. All vertices of a sphere's "
       "or a cylinder's tag must lie at one distance from the centre or the "
       "axis, those of a CAD tag on its surface.");
