@@ -439,13 +439,7 @@ namespace dyncontact
           moving_contact_nodes = true;
     for (unsigned int d = 0; d < dim; ++d)
       row.free[d] = !constraints.is_constrained(row.entries[d].first);
-    int best = -1;
-    for (unsigned int d = 0; d < dim; ++d)
-      if (row.free[d] && std::abs(row.normal[d]) > 1e-12 &&
-          (best < 0 || std::abs(row.normal[d]) > std::abs(row.normal[best])))
-        best = d;
-    row.eliminated = std::max(best, 0);
-    if (best >= 0)
+    if (row.choose_eliminated())
       rows.rows.push_back(row);
   }
 

@@ -73,7 +73,6 @@ namespace dyncontact
     traction_functions.clear();
     pressure_functions.clear();
     body_force_functions.clear();
-    loads_of_time = false;
     load_functions_of_time.clear();
     const auto loaded = [&](const unsigned int tag) {
       return neumann_tags.count(tag) || tag_tractions.count(tag) ||
@@ -121,7 +120,6 @@ namespace dyncontact
         const bool of_time = mentions_time(components);
         traction_functions[tag] =
           make_function<dim>(entry, components, constants, of_time);
-        loads_of_time = loads_of_time || of_time;
         if (of_time)
           load_functions_of_time.insert(traction_functions[tag].get());
       }
@@ -136,7 +134,6 @@ namespace dyncontact
         const bool of_time = mentions_time(components);
         pressure_functions[tag] =
           make_function<dim>(entry, components, constants, of_time);
-        loads_of_time = loads_of_time || of_time;
         if (of_time)
           load_functions_of_time.insert(pressure_functions[tag].get());
       }
@@ -161,7 +158,6 @@ namespace dyncontact
             if (of_time)
               load_functions_of_time.insert(body_force_functions.back().get());
           }
-        loads_of_time = loads_of_time || of_time;
       }
 
     // displacements that move: 'tag: components' of a Dirichlet tag
@@ -222,7 +218,7 @@ namespace dyncontact
     for (const auto &[tag, f] : pressure_functions)
       loads.pressures.emplace_back(tag, f.get());
     loads.of_time        = load_functions_of_time;
-    loads.time_dependent = loads_of_time;
+    loads.time_dependent = !load_functions_of_time.empty();
     return loads;
   }
 

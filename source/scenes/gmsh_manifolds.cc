@@ -38,6 +38,18 @@ namespace dyncontact
 
   namespace
   {
+    /// The extension of @p file in lower case (".step").
+    std::string
+    lower_case_extension(const std::string &file)
+    {
+      std::string extension = std::filesystem::path(file).extension();
+      for (char &c : extension)
+        c = std::tolower(c);
+      return extension;
+    }
+
+
+
     /// The shape of an IGES or STEP file in m (OpenCASCADE converts the
     /// file's declared length unit to mm, deal.II then by 1e-3 to m), its
     /// lengths times @p scale; refused naming @p entry if it cannot be
@@ -52,10 +64,8 @@ namespace dyncontact
       // rank)
       Message::DefaultMessenger()->RemovePrinters(
         STANDARD_TYPE(Message_PrinterOStream));
-      std::string extension = std::filesystem::path(file).extension();
-      for (char &c : extension)
-        c = std::tolower(c);
-      TopoDS_Shape shape;
+      const std::string extension = lower_case_extension(file);
+      TopoDS_Shape      shape;
       try
         {
           shape = (extension == ".step" || extension == ".stp") ?
@@ -140,10 +150,8 @@ namespace dyncontact
                                        "(a factor on the lengths of the "
                                        "file in its declared unit)."));
               }
-            std::string extension =
-              std::filesystem::path(binding.cad_file).extension();
-            for (char &c : extension)
-              c = std::tolower(c);
+            const std::string extension =
+              lower_case_extension(binding.cad_file);
             AssertThrow(extension == ".step" || extension == ".stp" ||
                           extension == ".iges" || extension == ".igs",
                         ExcMessage("Scene/Gmsh/" + entry +

@@ -61,6 +61,21 @@ namespace dyncontact
     {
       return entries.size() > n_components;
     }
+
+    /// Sets the eliminated component: the free one with the largest
+    /// |nu_i|; false (and eliminated unchanged) if there is none.
+    bool
+    choose_eliminated()
+    {
+      int best = -1;
+      for (unsigned int c = 0; c < n_components; ++c)
+        if (free[c] && std::abs(normal[c]) > 1e-12 &&
+            (best < 0 || std::abs(normal[c]) > std::abs(normal[best])))
+          best = c;
+      if (best >= 0)
+        eliminated = best;
+      return best >= 0;
+    }
   };
 
   /**
@@ -119,17 +134,12 @@ namespace dyncontact
             // row keeps its last one)
             if (n[0] == 0. && n[1] == 0. && n[2] == 0.)
               continue;
-            int best = -1;
             for (unsigned int c = 0; c < row.n_components; ++c)
               {
                 row.normal[c]         = -n[c];
                 row.entries[c].second = -n[c];
-                if (row.free[c] && std::abs(n[c]) > 1e-12 &&
-                    (best < 0 || std::abs(n[c]) > std::abs(n[best])))
-                  best = c;
               }
-            if (best >= 0)
-              row.eliminated = best;
+            row.choose_eliminated();
           }
     }
 

@@ -229,8 +229,6 @@ namespace dyncontact
     /// and t.
     std::map<unsigned int, std::shared_ptr<FunctionParser<dim>>>
       prescribed_functions;
-    /// Whether one of these uses t.
-    bool loads_of_time = false;
     /// the load functions above that depend on t
     std::set<const Function<dim> *> load_functions_of_time;
     Tensor<1, dim>                  traction;
