@@ -182,9 +182,15 @@ namespace dyncontact
   Simulator<dim>::record_statistics()
   {
     postprocessors->execute(*timer);
-    TimerOutput::Scope t(*timer, "diagnostics");
-    postprocessors->check_last_row();
-    reference_states->write(control.get_time());
+    {
+      TimerOutput::Scope t(*timer, "diagnostics");
+      postprocessors->check_last_row();
+    }
+    if (reference_states->writes())
+      {
+        TimerOutput::Scope t(*timer, "reference states");
+        reference_states->write(control.get_time());
+      }
     mesh_adaptor->clear_record();
   }
 

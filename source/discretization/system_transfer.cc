@@ -103,6 +103,45 @@ namespace dyncontact
 
   template <int dim>
   void
+  write_state_file(const std::string                     &file,
+                   const DoFHandler<dim>                 &dof_handler,
+                   const std::vector<const VectorType *> &ghosted)
+  {
+    if (const auto *distributed =
+          as_distributed(dof_handler.get_triangulation()))
+      {
+        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+          dof_handler);
+        transfer.prepare_for_serialization(ghosted);
+        distributed->save(file);
+      }
+    else
+      SerialMeshFile::write(file, dof_handler, ghosted);
+  }
+
+
+
+  template <int dim>
+  void
+  read_state_vectors(const std::string               &file,
+                     const DoFHandler<dim>           &dof_handler,
+                     const std::vector<VectorType *> &vectors)
+  {
+    if (as_distributed(dof_handler.get_triangulation()) == nullptr)
+      SerialMeshFile::read_vectors(file, dof_handler, vectors);
+    else
+      {
+        parallel::distributed::SolutionTransfer<dim, VectorType> loader(
+          dof_handler);
+        std::vector<VectorType *> out = vectors;
+        loader.deserialize(out);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   SemiDiscreteSystem<dim>::load_mesh(const std::string  &file,
                                      Triangulation<dim> &triangulation)
   {
@@ -122,15 +161,7 @@ namespace dyncontact
   {
     for (VectorType *v : vectors)
       reinit_vector(*v);
-    if (is_serial())
-      SerialMeshFile::read_vectors(file, dof_handler, vectors);
-    else
-      {
-        parallel::distributed::SolutionTransfer<dim, VectorType> loader(
-          dof_handler);
-        std::vector<VectorType *> out = vectors;
-        loader.deserialize(out);
-      }
+    read_state_vectors(file, dof_handler, vectors);
   }
 
 
@@ -150,7 +181,13 @@ namespace dyncontact
   template void SemiDiscreteSystem<dim>::load_mesh(const std::string &,   \
                                                    Triangulation<dim> &); \
   template void SemiDiscreteSystem<dim>::load_vectors(                    \
-    const std::string &, const std::vector<VectorType *> &);
+    const std::string &, const std::vector<VectorType *> &);            \
+  template void write_state_file(const std::string &,                     \
+                                 const DoFHandler<dim> &,                 \
+                                 const std::vector<const VectorType *> &); \
+  template void read_state_vectors(const std::string &,                   \
+                                   const DoFHandler<dim> &,               \
+                                   const std::vector<VectorType *> &);
   DYNCONTACT_INSTANTIATE(2)
   DYNCONTACT_INSTANTIATE(3)
 #undef DYNCONTACT_INSTANTIATE

@@ -3,24 +3,56 @@
 
 #include <dyncontact/base/collective_errors.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/base/triangulation.h>
 #include <dyncontact/output/reference_states.h>
+#include <dyncontact/output/state_comparison.h>
+#include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/simulation_control.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
 
 namespace dyncontact
 {
   namespace
   {
     std::string
-    state_file(const std::string &directory,
-               const unsigned int index,
-               const unsigned int rank)
+    state_file(const std::string &directory, const unsigned int index)
     {
-      return directory + "/state_" + Utilities::int_to_string(index, 5) + "." +
-             std::to_string(rank) + ".bin";
+      return directory + "/state_" + Utilities::int_to_string(index, 5);
+    }
+
+    /// The coarse mesh in a word: its number of cells and the sum of its
+    /// vertices' coordinates (states of one coarse mesh agree in both).
+    template <int dim>
+    std::string
+    coarse_signature(const Triangulation<dim> &triangulation)
+    {
+      double sum = 0.;
+      for (const auto &cell : triangulation.cell_iterators_on_level(0))
+        for (const auto v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            sum += cell->vertex(v)[d];
+      std::ostringstream out;
+      out << triangulation.n_cells(0) << "/" << std::setprecision(8) << sum;
+      return out.str();
+    }
+
+    /// The level of @p triangulation if all its active cells have it, else
+    /// -1.
+    template <int dim>
+    int
+    uniform_level(const Triangulation<dim> &triangulation)
+    {
+      const int level = triangulation.n_global_levels() - 1;
+      return double(triangulation.n_global_active_cells()) ==
+                 double(triangulation.n_cells(0)) * std::pow(2., dim * level) ?
+               level :
+               -1;
     }
   } // namespace
 
@@ -84,11 +116,7 @@ namespace dyncontact
   {
     if (!write_states && !compare_states)
       return;
-    AssertThrow(!adaptive_mesh,
-                ExcMessage(
-                  "Reference solutions need the same mesh in both "
-                  "runs: they cannot be combined with adaptive "
-                  "meshes (Mesh refinement/Refinement interval > 0)."));
+    (void)adaptive_mesh;
     control.require_multiples_of(interval, "Reference solution/Interval");
   }
 
@@ -115,32 +143,29 @@ namespace dyncontact
       return;
     const MPI_Comm                 comm   = this->get_mpi_communicator();
     const SemiDiscreteSystem<dim> &system = this->get_system();
-    const VectorType              &u      = this->get_solution();
-    const VectorType              &udot   = this->get_velocity();
-    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-    const std::string  file = state_file(directory, index, rank);
-    if (rank == 0)
-      std::filesystem::create_directories(directory);
-    MPI_Barrier(comm);
-    std::ofstream       out(file, std::ios::binary);
-    const unsigned long n     = system.locally_owned_dofs().n_elements();
-    const unsigned long total = system.get_dof_handler().n_dofs();
-    out.write(reinterpret_cast<const char *>(&total), sizeof(total));
-    out.write(reinterpret_cast<const char *>(&n), sizeof(n));
-    for (const auto i : system.locally_owned_dofs())
+    const std::string              file   = state_file(directory, index);
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    std::string error;
+    if (root)
       {
-        const unsigned long index_    = i;
-        const double        values[2] = {u(i), udot(i)};
-        out.write(reinterpret_cast<const char *>(&index_), sizeof(index_));
-        out.write(reinterpret_cast<const char *>(values), sizeof(values));
+        std::error_code failure;
+        std::filesystem::create_directories(directory, failure);
+        std::ofstream info(file + ".header");
+        info << "dyncontact state 2\ndimension " << dim << "\ndegree "
+             << system.get_fe().degree << "\ncoarse "
+             << coarse_signature(this->get_triangulation()) << "\nuniform "
+             << uniform_level(this->get_triangulation()) << "\ntime "
+             << std::setprecision(17) << time << '\n';
+        info.close();
+        if (!info.good())
+          error = "Cannot write the reference state '" + file +
+                  ".header' (Reference solution/Directory = '" + directory +
+                  "').";
       }
-    out.close();
-    // (on every rank: a rank that stopped alone would leave the others
-    // waiting)
-    stop_with_any_message(out.good() ?
-                            "" :
-                            "Cannot write the reference state '" + file + "'.",
-                          comm);
+    stop_with_any_message(error, comm);
+    const VectorType u    = system.ghosted(this->get_solution());
+    const VectorType udot = system.ghosted(this->get_velocity());
+    write_state_file(file, system.get_dof_handler(), {&u, &udot});
   }
 
 
@@ -153,50 +178,71 @@ namespace dyncontact
     if (!compare_states || index < 0)
       return std::nan("");
 
-    const MPI_Comm                 comm          = this->get_mpi_communicator();
-    const SemiDiscreteSystem<dim> &system        = this->get_system();
-    const auto                    &locally_owned = system.locally_owned_dofs();
-    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-    const std::string  file = state_file(directory, index, rank);
-    std::ifstream      in(file, std::ios::binary);
-    AssertThrow(in.good(),
-                ExcMessage(
-                  "Reference solution: there is no reference state '" + file +
-                  "' (a reference run on the same mesh and number of "
-                  "MPI ranks, with the same Interval, must write it)."));
-    unsigned long total = 0, n = 0;
-    in.read(reinterpret_cast<char *>(&total), sizeof(total));
-    in.read(reinterpret_cast<char *>(&n), sizeof(n));
-    AssertThrow(total == system.get_dof_handler().n_dofs() &&
-                  n == locally_owned.n_elements(),
-                ExcMessage("Reference solution: the state '" + file +
-                           "' belongs to a different mesh or partition (" +
-                           std::to_string(total) + " DoFs, here " +
-                           std::to_string(system.get_dof_handler().n_dofs()) +
-                           ")."));
-    VectorType e(this->get_solution()), edot(this->get_velocity());
-    for (unsigned long j = 0; j < n; ++j)
+    const MPI_Comm                 comm   = this->get_mpi_communicator();
+    const SemiDiscreteSystem<dim> &system = this->get_system();
+    const std::string              file   = state_file(directory, index);
+    // the header, read on every rank (a small text file)
+    std::ifstream info(file + ".header");
+    AssertThrow(info.good(),
+                ExcMessage("Reference solution: there is no reference state '" +
+                           file +
+                           ".header' (a reference run with Write states = true "
+                           "and the same Interval writes it)."));
+    std::map<std::string, std::string> header;
+    for (std::string line; std::getline(info, line);)
       {
-        unsigned long index_;
-        double        values[2];
-        in.read(reinterpret_cast<char *>(&index_), sizeof(index_));
-        in.read(reinterpret_cast<char *>(values), sizeof(values));
-        AssertThrow(in.good() && locally_owned.is_element(index_),
-                    ExcMessage("Reference solution: the state '" + file +
-                               "' does not match this mesh's partition."));
-        e(index_) -= values[0];
-        edot(index_) -= values[1];
+        const auto space = line.find(' ');
+        if (space != std::string::npos)
+          header[line.substr(0, space)] = line.substr(space + 1);
       }
-    // (subtracted: added to locally owned entries)
-    e.compress(VectorOperation::add);
-    edot.compress(VectorOperation::add);
-    VectorType tmp(e);
-    system.matrices().mass_vmult(tmp, edot);
-    double error2 = 0.5 * (tmp * edot);
-    system.stiffness_vmult(tmp, e);
-    error2 += 0.5 * (tmp * e);
-    return std::sqrt(std::max(error2, 0.));
+    const std::string coarse = coarse_signature(this->get_triangulation());
+    AssertThrow(header.count("degree") && header.count("uniform") &&
+                  header.count("dimension") && header.count("coarse"),
+                ExcMessage("Reference solution: '" + file +
+                           ".header' is not the header of a reference state "
+                           "of this program (written by an older version? "
+                           "run the reference again)."));
+    AssertThrow(header["dimension"] == std::to_string(dim) &&
+                  header["coarse"] == coarse,
+                ExcMessage("Reference solution: the state '" + file +
+                           "' belongs to another coarse mesh (" +
+                           header["dimension"] + "D, coarse mesh " +
+                           header["coarse"] + "; this run: " +
+                           std::to_string(dim) + "D, " + coarse +
+                           "): reference and run must refine the same "
+                           "coarse mesh."));
+    if (!comparison)
+      {
+        auto mesh = make_triangulation<dim>(
+          as_distributed(this->get_triangulation()) == nullptr, comm);
+        build_mesh(this->get_scene(),
+                   *mesh,
+                   0,
+                   system.get_fe().degree,
+                   /*coarse_only=*/true);
+        comparison = std::make_unique<StateComparison<dim>>(this->get_scene(),
+                                                            this->get_mapping(),
+                                                            *mesh);
+      }
+    return comparison->difference(file,
+                                  std::stoi(header["degree"]),
+                                  std::stoi(header["uniform"]),
+                                  system.get_dof_handler(),
+                                  system.ghosted(this->get_solution()),
+                                  system.ghosted(this->get_velocity()));
   }
+
+
+
+  template <int dim>
+  ReferenceStates<dim>::ReferenceStates() = default;
+
+
+
+  template <int dim>
+  ReferenceStates<dim>::~ReferenceStates() = default;
+
+
 
   template class ReferenceStates<2>;
   template class ReferenceStates<3>;

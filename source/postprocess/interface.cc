@@ -195,7 +195,7 @@ namespace dyncontact
       for (unsigned int k = 0; k < postprocessors.size(); ++k)
         if (postprocessors[k]->is_norm() && !skipped(k))
           {
-            TimerOutput::Scope t(timer, "sampled norms");
+            TimerOutput::Scope t(timer, postprocessors[k]->timer_section());
             postprocessors[k]->execute(values[k]);
           }
       {

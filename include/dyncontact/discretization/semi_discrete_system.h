@@ -575,6 +575,26 @@ namespace dyncontact
     std::vector<const VectorType *>
     start_transfer(const std::vector<const VectorType *> &vectors);
   };
+
+
+
+  /// A state's mesh and @p ghosted vectors into @p file, as a checkpoint
+  /// writes them (p4est's files, or SerialMeshFile on deal.II's serial
+  /// triangulation): readable on any number of ranks into a triangulation
+  /// that holds the same coarse mesh.
+  template <int dim>
+  void
+  write_state_file(const std::string                     &file,
+                   const DoFHandler<dim>                 &dof_handler,
+                   const std::vector<const VectorType *> &ghosted);
+
+  /// After SemiDiscreteSystem::load_mesh(@p file) and the DoFs of @p
+  /// dof_handler: the vectors of @p file (sized, without ghosts).
+  template <int dim>
+  void
+  read_state_vectors(const std::string               &file,
+                     const DoFHandler<dim>           &dof_handler,
+                     const std::vector<VectorType *> &vectors);
 } // namespace dyncontact
 
 #endif

@@ -3,6 +3,7 @@
 
 #include <dyncontact/core/simulator_access.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,15 +17,24 @@ namespace dyncontact
 {
   /**
    * Reference states (subsection "Reference solution"): a reference run
-   * (same mesh, much smaller time step) writes u and udot at fixed times;
-   * another run reads them at the same times and computes the error in the
-   * physical energy norm on the same mesh, ||(e, edot)||_E^2 = 1/2 edot^T M
-   * edot + 1/2 e^T A e (eqs. 22-24, without the viscous time integral).
+   * writes its mesh, u and udot at fixed times (write_state_file());
+   * another run of the same coarse mesh, on the same mesh or a coarser one
+   * (uniform or adapted, any polynomial degree, any number of ranks), reads
+   * them at the same times and reports the error in the physical energy
+   * norm ||(e, edot)||_E^2 = 1/2 ||edot||^2_{L2(rho)} + 1/2 a(e, e) (eqs.
+   * 22-24, without the viscous time integral), integrated on the
+   * reference's mesh (StateComparison).
    */
+  template <int dim>
+  class StateComparison;
+
   template <int dim>
   class ReferenceStates : public SimulatorAccess<dim>
   {
   public:
+    ReferenceStates();
+    ~ReferenceStates();
+
     /// The entries a run that neither writes nor compares states does not
     /// read.
     std::vector<std::pair<std::string, std::string>>
@@ -51,9 +61,9 @@ namespace dyncontact
       return write_states;
     }
 
-    /// Reference states need the same mesh in both runs (refused if
-    /// @p adaptive_mesh) and steps that reach their times (@p controller
-    /// stops there). Nothing if the run neither writes nor compares.
+    /// Reference states need steps that reach their times (@p control
+    /// stops there; an adaptive mesh, @p adaptive_mesh, is allowed). Nothing
+    /// if the run neither writes nor compares.
     void
     constrain(SimulationControl &control, const bool adaptive_mesh) const;
 
@@ -90,6 +100,9 @@ namespace dyncontact
     bool        compare_states = false;
     std::string directory      = "reference";
     double      interval       = 0.1;
+    /// The comparison with states on other meshes (made at the first
+    /// comparison: it holds a copy of the coarse mesh).
+    mutable std::unique_ptr<StateComparison<dim>> comparison;
   };
 } // namespace dyncontact
 

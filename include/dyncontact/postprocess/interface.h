@@ -80,6 +80,13 @@ namespace dyncontact
         return false;
       }
 
+      /// The TimerOutput section of an error norm's evaluations.
+      virtual std::string
+      timer_section() const
+      {
+        return "sampled norms";
+      }
+
       /// Appends one value per column for the current step to @p row.
       virtual void
       execute(std::vector<double> &row) = 0;

@@ -1,0 +1,69 @@
+#ifndef dyncontact_output_state_comparison_h
+#define dyncontact_output_state_comparison_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+
+namespace dyncontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  class Scene;
+
+  /**
+   * The difference of this run's state and a state written by another run
+   * (write_state_file()) on a mesh of the same coarse mesh, in the physical
+   * energy norm ||(e, edot)||_E^2 = 1/2 ||edot||^2_{L2(rho)} + 1/2 a(e, e)
+   * (the norm of the exact errors, Postprocess "error energy norm").
+   *
+   * The other run's mesh must be this run's or a refinement of it (a finer
+   * uniform or adapted mesh of the same coarse mesh, of any polynomial
+   * degree): this run's state is copied onto a second triangulation,
+   * refined there until it has the other run's mesh (cells are refined
+   * where the other mesh is finer, found through deal.II's
+   * RemotePointEvaluation), its values prolongated through the nested
+   * hierarchy with the element's matrices (p4est's SolutionTransfer, or the
+   * serial one), and the difference integrated cell by cell on that mesh.
+   * Every rank holds only its own cells of both meshes; any number of ranks
+   * reads the other run's files.
+   */
+  template <int dim>
+  class StateComparison
+  {
+  public:
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    /// @p coarse holds the scene's coarse mesh (as build_mesh() makes it
+    /// with coarse_only), with its manifolds; it is copied, not kept.
+    StateComparison(const Scene<dim>         &scene,
+                    const Mapping<dim>       &mapping,
+                    const Triangulation<dim> &coarse);
+    ~StateComparison();
+
+    /// ||(u - u_ref, udot - udot_ref)||_E with (u_ref, udot_ref) of degree
+    /// @p reference_degree read from @p file; @p u and @p udot ghosted on
+    /// @p dof_handler. @p uniform_level: the level of every cell of the
+    /// reference's mesh if they all have one, else -1.
+    double
+    difference(const std::string     &file,
+               const unsigned int     reference_degree,
+               const int              uniform_level,
+               const DoFHandler<dim> &dof_handler,
+               const VectorType      &u,
+               const VectorType      &udot) const;
+
+  private:
+    const Scene<dim>                   &scene;
+    const Mapping<dim>                 &mapping;
+    std::unique_ptr<Triangulation<dim>> coarse;
+  };
+} // namespace dyncontact
+
+#endif

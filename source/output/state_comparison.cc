@@ -1,0 +1,398 @@
+#include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <dyncontact/base/collective_errors.h>
+#include <dyncontact/base/triangulation.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/discretization/serial_transfer.h>
+#include <dyncontact/output/state_comparison.h>
+#include <dyncontact/scenes/interface.h>
+
+#include <cmath>
+
+namespace dyncontact
+{
+  namespace
+  {
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    /// A state (u, udot) on its own triangulation and DoFs.
+    template <int dim>
+    struct State
+    {
+      std::unique_ptr<Triangulation<dim>> triangulation;
+      std::unique_ptr<FESystem<dim>>      fe;
+      std::unique_ptr<DoFHandler<dim>>    dofs;
+      VectorType                          u, udot;
+
+      State(const Triangulation<dim> &source, const unsigned int degree)
+        : triangulation(make_triangulation<dim>(
+            as_distributed(source) == nullptr,
+            source.get_communicator()))
+        , fe(std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim))
+      {
+        triangulation->copy_triangulation(source);
+      }
+
+      void
+      distribute()
+      {
+        if (!dofs)
+          dofs = std::make_unique<DoFHandler<dim>>(*triangulation);
+        dofs->distribute_dofs(*fe);
+        u.reinit(dofs->locally_owned_dofs(),
+                 triangulation->get_communicator());
+        udot.reinit(u);
+      }
+
+      /// Ghosted copies of u and udot.
+      std::pair<VectorType, VectorType>
+      ghosted() const
+      {
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_dofs(*dofs, relevant);
+        VectorType a(dofs->locally_owned_dofs(),
+                     relevant,
+                     triangulation->get_communicator());
+        VectorType b(a);
+        a = u;
+        b = udot;
+        return {std::move(a), std::move(b)};
+      }
+
+      /// Refines the cells flagged, prolongating u and udot.
+      void
+      refine()
+      {
+        if (auto *distributed = as_distributed(*triangulation))
+          {
+            const auto [a, b] = ghosted();
+            parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+              *dofs);
+            transfer.prepare_for_coarsening_and_refinement(
+              std::vector<const VectorType *>{&a, &b});
+            distributed->execute_coarsening_and_refinement();
+            distribute();
+            std::vector<VectorType *> out = {&u, &udot};
+            transfer.interpolate(out);
+          }
+        else
+          {
+            SerialTransfer<dim> transfer;
+            transfer.prepare(*dofs, {&u, &udot});
+            triangulation->execute_coarsening_and_refinement();
+            distribute();
+            transfer.interpolate(*dofs, {&u, &udot});
+          }
+      }
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  StateComparison<dim>::StateComparison(const Scene<dim>         &scene,
+                                        const Mapping<dim>       &mapping,
+                                        const Triangulation<dim> &mesh)
+    : scene(scene)
+    , mapping(mapping)
+    , coarse(make_triangulation<dim>(as_distributed(mesh) == nullptr,
+                                     mesh.get_communicator()))
+  {
+    coarse->copy_triangulation(mesh);
+  }
+
+
+
+  template <int dim>
+  StateComparison<dim>::~StateComparison() = default;
+
+
+
+  template <int dim>
+  double
+  StateComparison<dim>::difference(const std::string     &file,
+                                   const unsigned int     reference_degree,
+                                   const int              uniform_level,
+                                   const DoFHandler<dim> &dof_handler,
+                                   const VectorType      &u,
+                                   const VectorType      &udot) const
+  {
+    const MPI_Comm comm = coarse->get_communicator();
+
+    // the other run's state on its mesh
+    State<dim> reference(*coarse, reference_degree);
+    SemiDiscreteSystem<dim>::load_mesh(file, *reference.triangulation);
+    reference.distribute();
+    read_state_vectors(file, *reference.dofs, {&reference.u, &reference.udot});
+
+    // the difference is integrated on the reference's cells, where both
+    // states are polynomials of degree at most this (exact for affine
+    // cells)
+    const unsigned int degree =
+      std::max(reference_degree, dof_handler.get_fe().degree);
+    const QGauss<dim>                reference_quadrature(degree + 1);
+    const Quadrature<dim>           &quadrature = reference_quadrature;
+    const FEValuesExtractors::Vector displacement(0);
+    FEValues<dim>                    values_ref(mapping,
+                             *reference.fe,
+                             quadrature,
+                             update_values | update_gradients |
+                               update_JxW_values);
+    const auto [u_ref, v_ref] = reference.ghosted();
+    std::vector<Tensor<1, dim>> v1(quadrature.size()), v2(v1);
+    std::vector<Tensor<2, dim>> g1(quadrature.size()), g2(g1);
+    double                      local   = 0.;
+    unsigned int                missing = 0;
+    // 1/2 rho |v1 - v2|^2 + 1/2 sigma(e) : eps(e) on the reference's cell
+    const auto add = [&](const auto &cell) {
+      values_ref[displacement].get_function_values(v_ref, v1);
+      values_ref[displacement].get_function_gradients(u_ref, g1);
+      const Material &material = scene.material(cell->material_id());
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        {
+          const Tensor<1, dim>          edot = v1[q] - v2[q];
+          const SymmetricTensor<2, dim> eps  = symmetrize(g1[q] - g2[q]);
+          local += (0.5 * material.density * (edot * edot) +
+                    0.5 * (2. * material.mu() * (eps * eps) +
+                           material.lambda() * trace(eps) * trace(eps))) *
+                   values_ref.JxW(q);
+        }
+    };
+
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      {
+        // on one rank every cell of both meshes is at hand: this run's
+        // values on a reference cell are those of its ancestor in this
+        // run's mesh, prolongated along the path of children
+        const Triangulation<dim>   &mesh = dof_handler.get_triangulation();
+        const FiniteElement<dim>   &fe   = dof_handler.get_fe();
+        FEValues<dim>               values_own(mapping,
+                                 fe,
+                                 quadrature,
+                                 update_values | update_gradients);
+        Vector<double>              cu(fe.n_dofs_per_cell()), cv(cu), tmp(cu);
+        std::vector<unsigned int>   path;
+        for (const auto &cell : reference.dofs->active_cell_iterators())
+          {
+            path.clear();
+            typename Triangulation<dim>::cell_iterator c = cell;
+            while (c->level() > 0)
+              {
+                path.push_back(c->parent()->child_iterator_to_index(c));
+                c = c->parent();
+              }
+            typename Triangulation<dim>::cell_iterator here(&mesh,
+                                                            0,
+                                                            c->index());
+            auto step = path.rbegin();
+            for (; step != path.rend() && here->has_children(); ++step)
+              here = here->child(*step);
+            if (here->has_children())
+              {
+                ++missing;
+                continue;
+              }
+            const typename DoFHandler<dim>::active_cell_iterator source(
+              &mesh, here->level(), here->index(), &dof_handler);
+            source->get_dof_values(u, cu);
+            source->get_dof_values(udot, cv);
+            for (; step != path.rend(); ++step)
+              {
+                const auto &prolongation = fe.get_prolongation_matrix(
+                  *step, RefinementCase<dim>::isotropic_refinement);
+                prolongation.vmult(tmp, cu);
+                cu = tmp;
+                prolongation.vmult(tmp, cv);
+                cv = tmp;
+              }
+            values_ref.reinit(cell);
+            values_own.reinit(
+              typename Triangulation<dim>::cell_iterator(cell));
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                v2[q] = 0;
+                g2[q] = 0;
+                for (unsigned int i = 0; i < cu.size(); ++i)
+                  {
+                    v2[q] += cv[i] * values_own[displacement].value(i, q);
+                    g2[q] += cu[i] * values_own[displacement].gradient(i, q);
+                  }
+              }
+            add(cell);
+          }
+        AssertThrow(missing == 0,
+                    ExcMessage("Reference solution: this run's mesh is finer "
+                               "than the reference's (" +
+                               file +
+                               ") somewhere: the reference must be a "
+                               "refinement of it."));
+        return std::sqrt(local);
+      }
+
+    // on several ranks: this run's state on a copy of its mesh, refined to
+    // the other's (p4est moves the cells between the ranks)
+    State<dim> own(dof_handler.get_triangulation(),
+                   dof_handler.get_fe().degree);
+    own.distribute();
+    {
+      Vector<double>                       values(own.fe->n_dofs_per_cell());
+      std::vector<types::global_dof_index> indices(own.fe->n_dofs_per_cell());
+      for (const auto &cell : own.dofs->active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto here =
+              dof_handler.get_triangulation().create_cell_iterator(cell->id());
+            const typename DoFHandler<dim>::active_cell_iterator source(
+              &dof_handler.get_triangulation(),
+              here->level(),
+              here->index(),
+              &dof_handler);
+            cell->get_dof_indices(indices);
+            for (auto [in, out] :
+                 {std::pair<const VectorType *, VectorType *>{&u, &own.u},
+                  {&udot, &own.udot}})
+              {
+                source->get_dof_values(*in, values);
+                for (unsigned int i = 0; i < indices.size(); ++i)
+                  if (own.dofs->locally_owned_dofs().is_element(indices[i]))
+                    (*out)(indices[i]) = values[i];
+              }
+          }
+      own.u.compress(VectorOperation::insert);
+      own.udot.compress(VectorOperation::insert);
+    }
+
+    // refine where the other mesh is finer: its level at a point of each
+    // cell that no refinement puts on a face (1/3 is no dyadic fraction)
+    AssertThrow(uniform_level < 0 ||
+                  int(own.triangulation->n_global_levels()) - 1 <=
+                    uniform_level,
+                ExcMessage("Reference solution: this run's mesh has cells of "
+                           "level " +
+                           std::to_string(
+                             own.triangulation->n_global_levels() - 1) +
+                           ", finer than the reference's (" + file +
+                           ", uniform level " + std::to_string(uniform_level) +
+                           "): the reference must be a refinement of it."));
+    for (unsigned int round = 0;; ++round)
+      {
+        // (a uniform reference: every cell below its level)
+        if (uniform_level >= 0)
+          {
+            unsigned int marked = 0;
+            for (const auto &cell : own.triangulation->active_cell_iterators())
+              if (cell->is_locally_owned() && cell->level() < uniform_level)
+                {
+                  cell->set_refine_flag();
+                  ++marked;
+                }
+            if (Utilities::MPI::sum(marked, comm) == 0)
+              break;
+            own.refine();
+            continue;
+          }
+        std::vector<Point<dim>> points;
+        std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+        Point<dim>                                                     third;
+        for (unsigned int d = 0; d < dim; ++d)
+          third[d] = 1. / 3.;
+        for (const auto &cell : own.triangulation->active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              points.push_back(mapping.transform_unit_to_real_cell(cell, third));
+              cells.push_back(cell);
+            }
+        Utilities::MPI::RemotePointEvaluation<dim> evaluation;
+        evaluation.reinit(points, *reference.triangulation, mapping);
+        stop_with_any_message(
+          evaluation.all_points_found() ?
+            "" :
+            "the reference state '" + file +
+              "' does not cover this run's mesh (another coarse mesh?).",
+          comm);
+        std::vector<double> levels, buffer;
+        const Triangulation<dim> &other = *reference.triangulation;
+        evaluation.template evaluate_and_process<double>(
+          levels,
+          buffer,
+          [&](const ArrayView<double> &values,
+              const typename Utilities::MPI::RemotePointEvaluation<dim>::CellData
+                &data) {
+            for (unsigned int c = 0; c < data.cells.size(); ++c)
+              for (unsigned int q = data.reference_point_ptrs[c];
+                   q < data.reference_point_ptrs[c + 1];
+                   ++q)
+                values[q] = typename Triangulation<dim>::cell_iterator(
+                              &other, data.cells[c].first, data.cells[c].second)
+                              ->level();
+          });
+        const auto &ptrs   = evaluation.get_point_ptrs();
+        unsigned    marked = 0;
+        std::string finer;
+        for (unsigned int i = 0; i < cells.size(); ++i)
+          {
+            double level = 0;
+            for (unsigned int j = ptrs[i]; j < ptrs[i + 1]; ++j)
+              level = std::max(level, levels[j]);
+            if (level > cells[i]->level())
+              {
+                cells[i]->set_refine_flag();
+                ++marked;
+              }
+            else if (level < cells[i]->level() && finer.empty())
+              finer = "this run's mesh is finer than the reference's (" +
+                      file + ") at level " +
+                      std::to_string(cells[i]->level()) +
+                      ": the reference must be a refinement of it.";
+          }
+        stop_with_any_message(finer, comm);
+        if (Utilities::MPI::sum(marked, comm) == 0)
+          break;
+        own.refine();
+      }
+
+    FEValues<dim> values_own(mapping,
+                             *own.fe,
+                             quadrature,
+                             update_values | update_gradients);
+    const auto [u_own, v_own] = own.ghosted();
+    for (const auto &cell : reference.dofs->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto match =
+            own.triangulation->create_cell_iterator(cell->id());
+          if (!match->is_active() || !match->is_locally_owned())
+            {
+              ++missing;
+              continue;
+            }
+          const typename DoFHandler<dim>::active_cell_iterator other(
+            own.triangulation.get(),
+            match->level(),
+            match->index(),
+            own.dofs.get());
+          values_ref.reinit(cell);
+          values_own.reinit(other);
+          values_own[displacement].get_function_values(v_own, v2);
+          values_own[displacement].get_function_gradients(u_own, g2);
+          add(cell);
+        }
+    stop_with_any_message(
+      missing == 0 ? "" :
+                     "the reference state '" + file +
+                       "' has cells that this run's refined mesh does not "
+                       "hold on the same rank (a mesh of another coarse mesh, "
+                       "or refined otherwise).",
+      comm);
+    return std::sqrt(Utilities::MPI::sum(local, comm));
+  }
+
+  template class StateComparison<2>;
+  template class StateComparison<3>;
+} // namespace dyncontact
