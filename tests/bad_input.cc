@@ -83,7 +83,7 @@ main(int argc, char **argv)
      "subsection Time integration\n  set Time step = 0\nend\n"
      "subsection Mesh refinement\n  set Minimum level = 3\n"
      "  set Maximum level = 1\nend\n"},
-    {"reference_with_adaptive_mesh",
+    {"reference_states_missing_adaptive_mesh",
      "subsection Mesh refinement\n  set Refinement interval = 2\nend\n"
      "subsection Reference solution\n  set Compare with states = true\nend\n"},
     {"resume_without_checkpoint",
