@@ -18,29 +18,6 @@
 
 namespace
 {
-  std::vector<std::map<std::string, std::string>>
-  read_csv(const std::string &file)
-  {
-    std::ifstream                                   in(file);
-    std::vector<std::string>                        header;
-    std::vector<std::map<std::string, std::string>> rows;
-    for (std::string line; std::getline(in, line);)
-      {
-        std::vector<std::string> cells;
-        std::stringstream        s(line);
-        for (std::string cell; std::getline(s, cell, ',');)
-          cells.push_back(cell);
-        if (header.empty())
-          header = cells;
-        else
-          {
-            rows.emplace_back();
-            for (unsigned int i = 0; i < cells.size() && i < header.size(); ++i)
-              rows.back()[header[i]] = cells[i];
-          }
-      }
-    return rows;
-  }
 
   /// The exact mean displacement of the bar: towards the wall at 1 m/s,
   /// in contact from 0.1 s to 2.1 s (decelerated by rho c v0 H / (rho L H)
@@ -105,26 +82,25 @@ end
   for (const auto &row : rows)
     {
       const int         level = std::stoi(row.at("level"));
-      const std::string name  = level == 3 ? "reference-level3" :
-                                             "uniform_p1-level" +
-                                              std::to_string(level);
-      const Statistics  s = read_statistics("study/" + name + "/statistics.tsv");
+      const std::string name  = level == 3 ?
+                                  "reference-level3" :
+                                  "uniform_p1-level" + std::to_string(level);
+      const Statistics s = read_statistics("study/" + name + "/statistics.tsv");
       // the exact errors at the study's sample times (every 0.25 s)
-      const auto times = s.column("time"), error = s.column("error_energy_norm"),
+      const auto times    = s.column("time"),
+                 error    = s.column("error_energy_norm"),
                  position = s.column("mean_displacement_x");
       double energy_max = 0., position_max = 0.;
       for (unsigned int i = 0; i < times.size(); ++i)
         {
           const double t = times[i];
           if (std::abs(t / 0.25 - std::round(t / 0.25)) < 1e-6)
-            energy_max =
-              std::max(energy_max, error[i] / scale);
+            energy_max = std::max(energy_max, error[i] / scale);
           position_max =
-            std::max(position_max,
-                     std::abs(position[i] - exact_position(t)));
+            std::max(position_max, std::abs(position[i] - exact_position(t)));
         }
       const double energy_end = error.back() / scale;
-      const auto ratio = [&](const std::string &column, const double exact) {
+      const auto   ratio = [&](const std::string &column, const double exact) {
         return std::stod(row.at(column)) / exact;
       };
       const double r_end = ratio("estimated_energy_end", energy_end);
@@ -137,7 +113,7 @@ end
                 << (std::abs(r_max - 1) <= 0.2 ? "within" : "NOT within")
                 << " 20 %, position "
                 << (std::abs(r_pos - 1) <= position_tolerance ? "within" :
-                                                                 "NOT within")
+                                                                "NOT within")
                 << ' ' << std::round(100 * position_tolerance) << " %"
                 << std::endl;
       if (std::abs(r_end - 1) > 0.2 || std::abs(r_max - 1) > 0.2 ||
@@ -147,20 +123,19 @@ end
     }
   for (const std::string key : {"energy max", "position max"})
     {
-      const auto at = first.find("   " + key + " ");
-      const auto line =
-        first.substr(at, first.find('\n', at) - at);
+      const auto at   = first.find("   " + key + " ");
+      const auto line = first.substr(at, first.find('\n', at) - at);
       std::cout << key << ": model '"
                 << (line.find("uncorrelated") != std::string::npos ?
                       "uncorrelated" :
-                      line.find("one shape") != std::string::npos ? "one shape" :
-                                                                     "none")
+                    line.find("one shape") != std::string::npos ? "one shape" :
+                                                                  "none")
                 << "'" << std::endl;
     }
 
   // run again: nothing is repeated, the same CSV
-  const std::string csv    = read("study/study.csv");
-  const std::string second = run_clean(command + "bar.prm");
+  const std::string csv      = read("study/study.csv");
+  const std::string second   = run_clean(command + "bar.prm");
   unsigned int      repeated = 0;
   for (auto at = second.find("done before"); at != std::string::npos;
        at      = second.find("done before", at + 1))

@@ -13,35 +13,6 @@
 
 #include "tests.h"
 
-namespace
-{
-  /// A CSV as rows of column -> text.
-  std::vector<std::map<std::string, std::string>>
-  read_csv(const std::string &file)
-  {
-    std::ifstream                                   in(file);
-    std::string                                     line;
-    std::vector<std::string>                        header;
-    std::vector<std::map<std::string, std::string>> rows;
-    while (std::getline(in, line))
-      {
-        std::vector<std::string> cells;
-        std::stringstream        s(line);
-        for (std::string cell; std::getline(s, cell, ',');)
-          cells.push_back(cell);
-        if (header.empty())
-          header = cells;
-        else
-          {
-            rows.emplace_back();
-            for (unsigned int i = 0; i < cells.size() && i < header.size(); ++i)
-              rows.back()[header[i]] = cells[i];
-          }
-      }
-    return rows;
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -635,6 +636,31 @@ namespace testing
     for (const double jump : s.column("energy_transfer"))
       largest = std::max(largest, std::abs(jump));
     return largest;
+  }
+  /// A CSV file (separated by commas, no quoting) as rows of column ->
+  /// text.
+  inline std::vector<std::map<std::string, std::string>>
+  read_csv(const std::string &file)
+  {
+    std::ifstream                                   in(file);
+    std::vector<std::string>                        header;
+    std::vector<std::map<std::string, std::string>> rows;
+    for (std::string line; std::getline(in, line);)
+      {
+        std::vector<std::string> cells;
+        std::stringstream        s(line);
+        for (std::string cell; std::getline(s, cell, ',');)
+          cells.push_back(cell);
+        if (header.empty())
+          header = cells;
+        else
+          {
+            rows.emplace_back();
+            for (unsigned int i = 0; i < cells.size() && i < header.size(); ++i)
+              rows.back()[header[i]] = cells[i];
+          }
+      }
+    return rows;
   }
 } // namespace testing
 

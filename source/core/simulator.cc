@@ -79,7 +79,7 @@ namespace dyncontact
       checkpoints.add_critical_parameter(scene->subsection() +
                                            "/(checksum of the input files)",
                                          scene->input_checksum());
-    reference_states->constrain(control, mesh_adaptor->adapts_during_run());
+    reference_states->constrain(control);
     mesh_adaptor->initialize_simulator(*this);
     vtu_writer->initialize_simulator(*this);
     reference_states->initialize_simulator(*this);

@@ -11,26 +11,6 @@
 namespace dyncontact
 {
   template <int dim>
-  std::vector<const VectorType *>
-  SemiDiscreteSystem<dim>::start_transfer(
-    const std::vector<const VectorType *> &vectors)
-  {
-    transferred.assign(vectors.size(),
-                       VectorType(locally_owned, locally_relevant, comm));
-    std::vector<const VectorType *> ghosted;
-    for (unsigned int i = 0; i < vectors.size(); ++i)
-      {
-        transferred[i] = *vectors[i];
-        ghosted.push_back(&transferred[i]);
-      }
-    transfer = std::make_unique<
-      parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
-    return ghosted;
-  }
-
-
-
-  template <int dim>
   bool
   SemiDiscreteSystem<dim>::is_serial() const
   {
@@ -51,9 +31,14 @@ namespace dyncontact
       }
     else
       {
-        // (the transfer object is made by start_transfer())
-        const auto vectors = start_transfer({&u, &udot});
-        transfer->prepare_for_coarsening_and_refinement(vectors);
+        // (p4est's transfer reads the ghosted copies when the mesh
+        // changes)
+        transferred = {ghosted(u), ghosted(udot)};
+        transfer    = std::make_unique<
+          parallel::distributed::SolutionTransfer<dim, VectorType>>(
+          dof_handler);
+        transfer->prepare_for_coarsening_and_refinement(
+          {&transferred[0], &transferred[1]});
       }
   }
 
@@ -90,13 +75,18 @@ namespace dyncontact
                                 const std::vector<const VectorType *> &vectors)
   {
     if (is_serial())
-      SerialMeshFile::write(file, dof_handler, vectors);
-    else
       {
-        const auto ghosted = start_transfer(vectors);
-        transfer->prepare_for_serialization(ghosted);
-        as_distributed(dof_handler.get_triangulation())->save(file);
+        write_state_file(file, dof_handler, vectors);
+        return;
       }
+    // (p4est's transfer packs the values of ghosted vectors)
+    std::vector<VectorType>         copies;
+    std::vector<const VectorType *> pointers;
+    for (const VectorType *v : vectors)
+      copies.push_back(ghosted(*v));
+    for (const VectorType &v : copies)
+      pointers.push_back(&v);
+    write_state_file(file, dof_handler, pointers);
   }
 
 
@@ -167,26 +157,23 @@ namespace dyncontact
 
 
   // (the class is instantiated in semi_discrete_system.cc)
-#define DYNCONTACT_INSTANTIATE(dim)                                       \
-  template std::vector<const VectorType *>                                \
-  SemiDiscreteSystem<dim>::start_transfer(                                \
-    const std::vector<const VectorType *> &);                             \
-  template bool SemiDiscreteSystem<dim>::is_serial() const;               \
-  template void SemiDiscreteSystem<dim>::prepare_for_refinement(          \
-    const VectorType &, const VectorType &);                              \
-  template void SemiDiscreteSystem<dim>::interpolate_after_refinement(    \
-    VectorType &, VectorType &);                                          \
-  template void SemiDiscreteSystem<dim>::save(                            \
-    const std::string &, const std::vector<const VectorType *> &);        \
-  template void SemiDiscreteSystem<dim>::load_mesh(const std::string &,   \
-                                                   Triangulation<dim> &); \
-  template void SemiDiscreteSystem<dim>::load_vectors(                    \
-    const std::string &, const std::vector<VectorType *> &);            \
-  template void write_state_file(const std::string &,                     \
-                                 const DoFHandler<dim> &,                 \
+#define DYNCONTACT_INSTANTIATE(dim)                                        \
+  template bool SemiDiscreteSystem<dim>::is_serial() const;                \
+  template void SemiDiscreteSystem<dim>::prepare_for_refinement(           \
+    const VectorType &, const VectorType &);                               \
+  template void SemiDiscreteSystem<dim>::interpolate_after_refinement(     \
+    VectorType &, VectorType &);                                           \
+  template void SemiDiscreteSystem<dim>::save(                             \
+    const std::string &, const std::vector<const VectorType *> &);         \
+  template void SemiDiscreteSystem<dim>::load_mesh(const std::string &,    \
+                                                   Triangulation<dim> &);  \
+  template void SemiDiscreteSystem<dim>::load_vectors(                     \
+    const std::string &, const std::vector<VectorType *> &);               \
+  template void write_state_file(const std::string &,                      \
+                                 const DoFHandler<dim> &,                  \
                                  const std::vector<const VectorType *> &); \
-  template void read_state_vectors(const std::string &,                   \
-                                   const DoFHandler<dim> &,               \
+  template void read_state_vectors(const std::string &,                    \
+                                   const DoFHandler<dim> &,                \
                                    const std::vector<VectorType *> &);
   DYNCONTACT_INSTANTIATE(2)
   DYNCONTACT_INSTANTIATE(3)

@@ -2,8 +2,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <dyncontact/base/collective_errors.h>
-#include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/base/triangulation.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/output/reference_states.h>
 #include <dyncontact/output/state_comparison.h>
 #include <dyncontact/scenes/interface.h>
@@ -42,18 +42,6 @@ namespace dyncontact
       return out.str();
     }
 
-    /// The level of @p triangulation if all its active cells have it, else
-    /// -1.
-    template <int dim>
-    int
-    uniform_level(const Triangulation<dim> &triangulation)
-    {
-      const int level = triangulation.n_global_levels() - 1;
-      return double(triangulation.n_global_active_cells()) ==
-                 double(triangulation.n_cells(0)) * std::pow(2., dim * level) ?
-               level :
-               -1;
-    }
   } // namespace
 
 
@@ -111,12 +99,10 @@ namespace dyncontact
 
   template <int dim>
   void
-  ReferenceStates<dim>::constrain(SimulationControl &control,
-                                  const bool         adaptive_mesh) const
+  ReferenceStates<dim>::constrain(SimulationControl &control) const
   {
     if (!write_states && !compare_states)
       return;
-    (void)adaptive_mesh;
     control.require_multiples_of(interval, "Reference solution/Interval");
   }
 
@@ -144,7 +130,7 @@ namespace dyncontact
     const MPI_Comm                 comm   = this->get_mpi_communicator();
     const SemiDiscreteSystem<dim> &system = this->get_system();
     const std::string              file   = state_file(directory, index);
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
     std::string error;
     if (root)
       {
@@ -153,8 +139,7 @@ namespace dyncontact
         std::ofstream info(file + ".header");
         info << "dyncontact state 2\ndimension " << dim << "\ndegree "
              << system.get_fe().degree << "\ncoarse "
-             << coarse_signature(this->get_triangulation()) << "\nuniform "
-             << uniform_level(this->get_triangulation()) << "\ntime "
+             << coarse_signature(this->get_triangulation()) << "\ntime "
              << std::setprecision(17) << time << '\n';
         info.close();
         if (!info.good())
@@ -196,21 +181,20 @@ namespace dyncontact
           header[line.substr(0, space)] = line.substr(space + 1);
       }
     const std::string coarse = coarse_signature(this->get_triangulation());
-    AssertThrow(header.count("degree") && header.count("uniform") &&
-                  header.count("dimension") && header.count("coarse"),
+    AssertThrow(header.count("degree") && header.count("dimension") &&
+                  header.count("coarse"),
                 ExcMessage("Reference solution: '" + file +
                            ".header' is not the header of a reference state "
                            "of this program (written by an older version? "
                            "run the reference again)."));
-    AssertThrow(header["dimension"] == std::to_string(dim) &&
-                  header["coarse"] == coarse,
-                ExcMessage("Reference solution: the state '" + file +
-                           "' belongs to another coarse mesh (" +
-                           header["dimension"] + "D, coarse mesh " +
-                           header["coarse"] + "; this run: " +
-                           std::to_string(dim) + "D, " + coarse +
-                           "): reference and run must refine the same "
-                           "coarse mesh."));
+    AssertThrow(
+      header["dimension"] == std::to_string(dim) && header["coarse"] == coarse,
+      ExcMessage("Reference solution: the state '" + file +
+                 "' belongs to another coarse mesh (" + header["dimension"] +
+                 "D, coarse mesh " + header["coarse"] +
+                 "; this run: " + std::to_string(dim) + "D, " + coarse +
+                 "): reference and run must refine the same "
+                 "coarse mesh."));
     if (!comparison)
       {
         auto mesh = make_triangulation<dim>(
@@ -222,11 +206,10 @@ namespace dyncontact
                    /*coarse_only=*/true);
         comparison = std::make_unique<StateComparison<dim>>(this->get_scene(),
                                                             this->get_mapping(),
-                                                            *mesh);
+                                                            std::move(mesh));
       }
     return comparison->difference(file,
                                   std::stoi(header["degree"]),
-                                  std::stoi(header["uniform"]),
                                   system.get_dof_handler(),
                                   system.ghosted(this->get_solution()),
                                   system.ghosted(this->get_velocity()));

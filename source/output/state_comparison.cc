@@ -31,9 +31,9 @@ namespace dyncontact
       VectorType                          u, udot;
 
       State(const Triangulation<dim> &source, const unsigned int degree)
-        : triangulation(make_triangulation<dim>(
-            as_distributed(source) == nullptr,
-            source.get_communicator()))
+        : triangulation(
+            make_triangulation<dim>(as_distributed(source) == nullptr,
+                                    source.get_communicator()))
         , fe(std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim))
       {
         triangulation->copy_triangulation(source);
@@ -45,8 +45,7 @@ namespace dyncontact
         if (!dofs)
           dofs = std::make_unique<DoFHandler<dim>>(*triangulation);
         dofs->distribute_dofs(*fe);
-        u.reinit(dofs->locally_owned_dofs(),
-                 triangulation->get_communicator());
+        u.reinit(dofs->locally_owned_dofs(), triangulation->get_communicator());
         udot.reinit(u);
       }
 
@@ -96,16 +95,14 @@ namespace dyncontact
 
 
   template <int dim>
-  StateComparison<dim>::StateComparison(const Scene<dim>         &scene,
-                                        const Mapping<dim>       &mapping,
-                                        const Triangulation<dim> &mesh)
+  StateComparison<dim>::StateComparison(
+    const Scene<dim>                   &scene,
+    const Mapping<dim>                 &mapping,
+    std::unique_ptr<Triangulation<dim>> coarse)
     : scene(scene)
     , mapping(mapping)
-    , coarse(make_triangulation<dim>(as_distributed(mesh) == nullptr,
-                                     mesh.get_communicator()))
-  {
-    coarse->copy_triangulation(mesh);
-  }
+    , coarse(std::move(coarse))
+  {}
 
 
 
@@ -118,7 +115,6 @@ namespace dyncontact
   double
   StateComparison<dim>::difference(const std::string     &file,
                                    const unsigned int     reference_degree,
-                                   const int              uniform_level,
                                    const DoFHandler<dim> &dof_handler,
                                    const VectorType      &u,
                                    const VectorType      &udot) const
@@ -136,8 +132,7 @@ namespace dyncontact
     // cells)
     const unsigned int degree =
       std::max(reference_degree, dof_handler.get_fe().degree);
-    const QGauss<dim>                reference_quadrature(degree + 1);
-    const Quadrature<dim>           &quadrature = reference_quadrature;
+    const QGauss<dim>                quadrature(degree + 1);
     const FEValuesExtractors::Vector displacement(0);
     FEValues<dim>                    values_ref(mapping,
                              *reference.fe,
@@ -170,14 +165,14 @@ namespace dyncontact
         // on one rank every cell of both meshes is at hand: this run's
         // values on a reference cell are those of its ancestor in this
         // run's mesh, prolongated along the path of children
-        const Triangulation<dim>   &mesh = dof_handler.get_triangulation();
-        const FiniteElement<dim>   &fe   = dof_handler.get_fe();
-        FEValues<dim>               values_own(mapping,
+        const Triangulation<dim> &mesh = dof_handler.get_triangulation();
+        const FiniteElement<dim> &fe   = dof_handler.get_fe();
+        FEValues<dim>             values_own(mapping,
                                  fe,
                                  quadrature,
                                  update_values | update_gradients);
-        Vector<double>              cu(fe.n_dofs_per_cell()), cv(cu), tmp(cu);
-        std::vector<unsigned int>   path;
+        Vector<double>            cu(fe.n_dofs_per_cell()), cv(cu), tmp(cu);
+        std::vector<unsigned int> path;
         for (const auto &cell : reference.dofs->active_cell_iterators())
           {
             path.clear();
@@ -190,7 +185,7 @@ namespace dyncontact
             typename Triangulation<dim>::cell_iterator here(&mesh,
                                                             0,
                                                             c->index());
-            auto step = path.rbegin();
+            auto                                       step = path.rbegin();
             for (; step != path.rend() && here->has_children(); ++step)
               here = here->child(*step);
             if (here->has_children())
@@ -212,8 +207,7 @@ namespace dyncontact
                 cv = tmp;
               }
             values_ref.reinit(cell);
-            values_own.reinit(
-              typename Triangulation<dim>::cell_iterator(cell));
+            values_own.reinit(typename Triangulation<dim>::cell_iterator(cell));
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 v2[q] = 0;
@@ -270,34 +264,9 @@ namespace dyncontact
 
     // refine where the other mesh is finer: its level at a point of each
     // cell that no refinement puts on a face (1/3 is no dyadic fraction)
-    AssertThrow(uniform_level < 0 ||
-                  int(own.triangulation->n_global_levels()) - 1 <=
-                    uniform_level,
-                ExcMessage("Reference solution: this run's mesh has cells of "
-                           "level " +
-                           std::to_string(
-                             own.triangulation->n_global_levels() - 1) +
-                           ", finer than the reference's (" + file +
-                           ", uniform level " + std::to_string(uniform_level) +
-                           "): the reference must be a refinement of it."));
-    for (unsigned int round = 0;; ++round)
+    for (;;)
       {
-        // (a uniform reference: every cell below its level)
-        if (uniform_level >= 0)
-          {
-            unsigned int marked = 0;
-            for (const auto &cell : own.triangulation->active_cell_iterators())
-              if (cell->is_locally_owned() && cell->level() < uniform_level)
-                {
-                  cell->set_refine_flag();
-                  ++marked;
-                }
-            if (Utilities::MPI::sum(marked, comm) == 0)
-              break;
-            own.refine();
-            continue;
-          }
-        std::vector<Point<dim>> points;
+        std::vector<Point<dim>>                                        points;
         std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
         Point<dim>                                                     third;
         for (unsigned int d = 0; d < dim; ++d)
@@ -305,7 +274,8 @@ namespace dyncontact
         for (const auto &cell : own.triangulation->active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              points.push_back(mapping.transform_unit_to_real_cell(cell, third));
+              points.push_back(
+                mapping.transform_unit_to_real_cell(cell, third));
               cells.push_back(cell);
             }
         Utilities::MPI::RemotePointEvaluation<dim> evaluation;
@@ -316,14 +286,15 @@ namespace dyncontact
             "the reference state '" + file +
               "' does not cover this run's mesh (another coarse mesh?).",
           comm);
-        std::vector<double> levels, buffer;
+        std::vector<double>       levels, buffer;
         const Triangulation<dim> &other = *reference.triangulation;
         evaluation.template evaluate_and_process<double>(
           levels,
           buffer,
-          [&](const ArrayView<double> &values,
-              const typename Utilities::MPI::RemotePointEvaluation<dim>::CellData
-                &data) {
+          [&](
+            const ArrayView<double> &values,
+            const typename Utilities::MPI::RemotePointEvaluation<dim>::CellData
+              &data) {
             for (unsigned int c = 0; c < data.cells.size(); ++c)
               for (unsigned int q = data.reference_point_ptrs[c];
                    q < data.reference_point_ptrs[c + 1];
@@ -346,9 +317,8 @@ namespace dyncontact
                 ++marked;
               }
             else if (level < cells[i]->level() && finer.empty())
-              finer = "this run's mesh is finer than the reference's (" +
-                      file + ") at level " +
-                      std::to_string(cells[i]->level()) +
+              finer = "this run's mesh is finer than the reference's (" + file +
+                      ") at level " + std::to_string(cells[i]->level()) +
                       ": the reference must be a refinement of it.";
           }
         stop_with_any_message(finer, comm);

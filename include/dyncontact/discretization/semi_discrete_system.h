@@ -560,8 +560,8 @@ namespace dyncontact
     double                               prescribed_delta = 0.;
     VectorType                           boundary_weights;
 
-    /// A state in transfer (refinement or checkpoint) and its ghosted copy
-    /// for p4est's transfer, or the transfer on a serial triangulation.
+    /// A state in transfer to a refined mesh and its ghosted copy for
+    /// p4est's transfer, or the transfer on a serial triangulation.
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
                                          transfer;
     std::vector<VectorType>              transferred;
@@ -569,11 +569,6 @@ namespace dyncontact
     /// Whether the DoFs are on deal.II's serial triangulation.
     bool
     is_serial() const;
-    /// Copies @p vectors into ghosted vectors and starts a new p4est
-    /// transfer object on the current DoFs; returns the vectors to hand to
-    /// it.
-    std::vector<const VectorType *>
-    start_transfer(const std::vector<const VectorType *> &vectors);
   };
 
 

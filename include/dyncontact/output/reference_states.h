@@ -62,10 +62,9 @@ namespace dyncontact
     }
 
     /// Reference states need steps that reach their times (@p control
-    /// stops there; an adaptive mesh, @p adaptive_mesh, is allowed). Nothing
-    /// if the run neither writes nor compares.
+    /// stops there). Nothing if the run neither writes nor compares.
     void
-    constrain(SimulationControl &control, const bool adaptive_mesh) const;
+    constrain(SimulationControl &control) const;
 
     /// Whether this run compares with reference states.
     bool

@@ -25,14 +25,16 @@ namespace dyncontact
    *
    * The other run's mesh must be this run's or a refinement of it (a finer
    * uniform or adapted mesh of the same coarse mesh, of any polynomial
-   * degree): this run's state is copied onto a second triangulation,
-   * refined there until it has the other run's mesh (cells are refined
-   * where the other mesh is finer, found through deal.II's
-   * RemotePointEvaluation), its values prolongated through the nested
-   * hierarchy with the element's matrices (p4est's SolutionTransfer, or the
-   * serial one), and the difference integrated cell by cell on that mesh.
-   * Every rank holds only its own cells of both meshes; any number of ranks
-   * reads the other run's files.
+   * degree); the difference is integrated on its cells, where this run's
+   * state is prolongated through the nested hierarchy with the element's
+   * matrices. On one rank, each cell's values are those of its ancestor in
+   * this run's mesh, prolongated along the path of children. On several,
+   * this run's state is copied onto a second triangulation and refined
+   * there until it has the other run's mesh (cells are refined where the
+   * other mesh is finer, found through deal.II's RemotePointEvaluation;
+   * p4est's SolutionTransfer moves them between the ranks). Every rank
+   * holds only its own cells of both meshes; any number of ranks reads the
+   * other run's files.
    */
   template <int dim>
   class StateComparison
@@ -41,20 +43,18 @@ namespace dyncontact
     using VectorType = TrilinosWrappers::MPI::Vector;
 
     /// @p coarse holds the scene's coarse mesh (as build_mesh() makes it
-    /// with coarse_only), with its manifolds; it is copied, not kept.
-    StateComparison(const Scene<dim>         &scene,
-                    const Mapping<dim>       &mapping,
-                    const Triangulation<dim> &coarse);
+    /// with coarse_only), with its manifolds.
+    StateComparison(const Scene<dim>                   &scene,
+                    const Mapping<dim>                 &mapping,
+                    std::unique_ptr<Triangulation<dim>> coarse);
     ~StateComparison();
 
     /// ||(u - u_ref, udot - udot_ref)||_E with (u_ref, udot_ref) of degree
     /// @p reference_degree read from @p file; @p u and @p udot ghosted on
-    /// @p dof_handler. @p uniform_level: the level of every cell of the
-    /// reference's mesh if they all have one, else -1.
+    /// @p dof_handler.
     double
     difference(const std::string     &file,
                const unsigned int     reference_degree,
-               const int              uniform_level,
                const DoFHandler<dim> &dof_handler,
                const VectorType      &u,
                const VectorType      &udot) const;
