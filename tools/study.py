@@ -35,7 +35,8 @@ own error, e_k = C h_k^r, the reference's error C h_ref^r extrapolated).
 With four levels or more the rate of the levels before decides the model
 and the reliability: 'asymptotic' if it agrees within 25 %, otherwise 'not
 asymptotic' (the estimate is then only the order of magnitude); 'not
-converging' if the differences do not fall.
+converging' if the differences do not fall. With three levels nothing
+decides: the larger of the two estimates is taken and the other printed.
 
 Writes <out>/study.csv, <out>/study.png (estimated energy-norm error
 against run time, one curve per configuration) and prints the table and
@@ -445,7 +446,7 @@ def estimate(e):
     the run's own error (|e_k - E_k| <= E_ref), e_k = C h_k^r, and the
     reference's error is extrapolated, C h_ref^r = e_(N-2)^2 / e_(N-3). The
     model whose rate the levels before confirm best is taken; with three
-    levels 'one shape' where it gives a rate."""
+    levels, which cannot tell them apart, the larger estimate."""
     n = len(e)
     if n < 2:
         return ("-", float("nan"), float("nan"), "two levels: no rate")
@@ -465,8 +466,12 @@ def estimate(e):
     if not candidates:
         return ("-", float("nan"), float("nan"), "not converging")
     if n < 3:
-        model, r, error, _ = candidates[0]
-        return (model, r, error, "unchecked (three levels)")
+        # no level before to decide: the larger estimate, and the other
+        model, r, error, _ = max(candidates, key=lambda c: c[2])
+        others = [c for c in candidates if c[0] != model]
+        return (model, r, error, "unchecked (three levels%s)" %
+                ("; %s: rate %.2f, %.3g" % (others[0][0], others[0][1],
+                                           others[0][2]) if others else ""))
     spread = lambda c: abs(c[3] - c[1]) / c[1] if c[3] == c[3] else float("inf")
     model, r, error, check = min(candidates, key=spread)
     if spread((model, r, error, check)) <= 0.25:
@@ -523,7 +528,7 @@ for row in lines:
 print("(energy: at the end; energy*: largest over the sample times; force "
       "and force L1 relative to the reference's peak; position: largest over "
       "time; contact, release: first contact and last release, s)")
-print("\nRates and the reference's own error (Richardson, levels %d-%d of %s):"
+print("\nRates and the reference's own error (from levels %d-%d of %s):"
       % (max(finest - 2, 0), finest, base))
 for key in keys:
     r, e, note, model = estimates[key]
@@ -549,6 +554,16 @@ if target is not None and target == target:
               "of %.3g: %s, level %d, %.3g s" % (target, best[0], best[1], best[2]))
     else:
         print("No run reaches an estimated energy-norm error of %.3g" % target)
+reference_error = estimates["energy max"][1]
+unresolved = ["%s level %d" % (m["configuration"], m["level"])
+              for m in (dict(zip(columns, r)) for r in lines)
+              if m["energy_max"] > 0 and reference_error == reference_error
+              and m["energy_max"] < 1.2 * reference_error]
+if unresolved:
+    print("Differences from the reference below 1.2 times its own estimated "
+          "error (%.3g): %s; their errors are not resolved by this "
+          "reference (their estimates are its error): add a level"
+          % (reference_error, ", ".join(unresolved)))
 
 try:
     import matplotlib

@@ -102,7 +102,8 @@ namespace dyncontact
       {
         parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
           dof_handler);
-        transfer.prepare_for_serialization(ghosted);
+        if (!ghosted.empty())
+          transfer.prepare_for_serialization(ghosted);
         distributed->save(file);
       }
     else

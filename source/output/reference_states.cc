@@ -136,11 +136,30 @@ namespace dyncontact
       {
         std::error_code failure;
         std::filesystem::create_directories(directory, failure);
+      }
+    // the mesh once, and again after each change of it
+    if (!mesh_changed)
+      {
+        mesh_changed = std::make_shared<bool>(true);
+        this->get_triangulation().signals.any_change.connect(
+          [flag = mesh_changed]() { *flag = true; });
+      }
+    if (*mesh_changed)
+      {
+        mesh_name = "mesh_" + Utilities::int_to_string(index, 5);
+        write_state_file(directory + "/" + mesh_name,
+                         system.get_dof_handler(),
+                         {});
+        *mesh_changed = false;
+      }
+    if (root)
+      {
         std::ofstream info(file + ".header");
-        info << "dyncontact state 2\ndimension " << dim << "\ndegree "
+        info << "dyncontact state 3\ndimension " << dim << "\ndegree "
              << system.get_fe().degree << "\ncoarse "
-             << coarse_signature(this->get_triangulation()) << "\ntime "
-             << std::setprecision(17) << time << '\n';
+             << coarse_signature(this->get_triangulation()) << "\nmesh "
+             << mesh_name << "\nranks " << Utilities::MPI::n_mpi_processes(comm)
+             << "\ntime " << std::setprecision(17) << time << '\n';
         info.close();
         if (!info.good())
           error = "Cannot write the reference state '" + file +
@@ -148,9 +167,12 @@ namespace dyncontact
                   "').";
       }
     stop_with_any_message(error, comm);
-    const VectorType u    = system.ghosted(this->get_solution());
-    const VectorType udot = system.ghosted(this->get_velocity());
-    write_state_file(file, system.get_dof_handler(), {&u, &udot});
+    StateComparison<dim>::write_values(
+      file + ".values." +
+        std::to_string(Utilities::MPI::this_mpi_process(comm)),
+      system.get_dof_handler(),
+      system.ghosted(this->get_solution()),
+      system.ghosted(this->get_velocity()));
   }
 
 
@@ -181,7 +203,8 @@ namespace dyncontact
           header[line.substr(0, space)] = line.substr(space + 1);
       }
     const std::string coarse = coarse_signature(this->get_triangulation());
-    AssertThrow(header.count("degree") && header.count("dimension") &&
+    AssertThrow(header.count("degree") && header.count("mesh") &&
+                  header.count("ranks") && header.count("dimension") &&
                   header.count("coarse"),
                 ExcMessage("Reference solution: '" + file +
                            ".header' is not the header of a reference state "
@@ -208,7 +231,9 @@ namespace dyncontact
                                                             this->get_mapping(),
                                                             std::move(mesh));
       }
-    return comparison->difference(file,
+    return comparison->difference(directory + "/" + header["mesh"],
+                                  file + ".values",
+                                  std::stoi(header["ranks"]),
                                   std::stoi(header["degree"]),
                                   system.get_dof_handler(),
                                   system.ghosted(this->get_solution()),

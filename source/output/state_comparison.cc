@@ -14,83 +14,214 @@
 #include <dyncontact/scenes/interface.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
 
 namespace dyncontact
 {
+  /// A state (u, udot) on its own triangulation and DoFs.
+  template <int dim>
+  struct ComparedState
+  {
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    std::unique_ptr<Triangulation<dim>> triangulation;
+    std::unique_ptr<FESystem<dim>>      fe;
+    std::unique_ptr<DoFHandler<dim>>    dofs;
+    VectorType                          u, udot;
+
+    ComparedState(const Triangulation<dim> &source, const unsigned int degree)
+      : triangulation(make_triangulation<dim>(as_distributed(source) == nullptr,
+                                              source.get_communicator()))
+      , fe(std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim))
+    {
+      triangulation->copy_triangulation(source);
+    }
+
+    void
+    distribute()
+    {
+      if (!dofs)
+        dofs = std::make_unique<DoFHandler<dim>>(*triangulation);
+      dofs->distribute_dofs(*fe);
+      u.reinit(dofs->locally_owned_dofs(), triangulation->get_communicator());
+      udot.reinit(u);
+    }
+
+    /// Ghosted copies of u and udot.
+    std::pair<VectorType, VectorType>
+    ghosted() const
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(*dofs, relevant);
+      VectorType a(dofs->locally_owned_dofs(),
+                   relevant,
+                   triangulation->get_communicator());
+      VectorType b(a);
+      a = u;
+      b = udot;
+      return {std::move(a), std::move(b)};
+    }
+
+    /// Refines the cells flagged, prolongating u and udot.
+    void
+    refine()
+    {
+      if (auto *distributed = as_distributed(*triangulation))
+        {
+          const auto [a, b] = ghosted();
+          parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+            *dofs);
+          transfer.prepare_for_coarsening_and_refinement(
+            std::vector<const VectorType *>{&a, &b});
+          distributed->execute_coarsening_and_refinement();
+          distribute();
+          std::vector<VectorType *> out = {&u, &udot};
+          transfer.interpolate(out);
+        }
+      else
+        {
+          SerialTransfer<dim> transfer;
+          transfer.prepare(*dofs, {&u, &udot});
+          triangulation->execute_coarsening_and_refinement();
+          distribute();
+          transfer.interpolate(*dofs, {&u, &udot});
+        }
+    }
+  };
+
+
+
   namespace
   {
     using VectorType = TrilinosWrappers::MPI::Vector;
 
-    /// A state (u, udot) on its own triangulation and DoFs.
+    /// The active cells this rank owns (of either triangulation).
     template <int dim>
-    struct State
+    unsigned int
+    n_owned_cells(const Triangulation<dim> &triangulation)
     {
-      std::unique_ptr<Triangulation<dim>> triangulation;
-      std::unique_ptr<FESystem<dim>>      fe;
-      std::unique_ptr<DoFHandler<dim>>    dofs;
-      VectorType                          u, udot;
+      unsigned int n = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        n += cell->is_locally_owned() ? 1 : 0;
+      return n;
+    }
 
-      State(const Triangulation<dim> &source, const unsigned int degree)
-        : triangulation(
-            make_triangulation<dim>(as_distributed(source) == nullptr,
-                                    source.get_communicator()))
-        , fe(std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim))
-      {
-        triangulation->copy_triangulation(source);
-      }
+    /// The cell @p id of @p triangulation, or its end if this rank does
+    /// not hold it; @p coarse_cells: the level-0 index of each coarse cell
+    /// id.
+    template <int dim>
+    typename Triangulation<dim>::cell_iterator
+    find_cell(const Triangulation<dim>                        &triangulation,
+              const std::map<types::coarse_cell_id, unsigned> &coarse_cells,
+              const CellId                                    &id)
+    {
+      const auto coarse = coarse_cells.find(id.get_coarse_cell_id());
+      if (coarse == coarse_cells.end())
+        return triangulation.end();
+      typename Triangulation<dim>::cell_iterator cell(&triangulation,
+                                                      0,
+                                                      coarse->second);
+      for (const auto child : id.get_child_indices())
+        {
+          if (!cell->has_children())
+            return triangulation.end();
+          cell = cell->child(child);
+        }
+      return cell;
+    }
 
-      void
-      distribute()
-      {
-        if (!dofs)
-          dofs = std::make_unique<DoFHandler<dim>>(*triangulation);
-        dofs->distribute_dofs(*fe);
-        u.reinit(dofs->locally_owned_dofs(), triangulation->get_communicator());
-        udot.reinit(u);
-      }
-
-      /// Ghosted copies of u and udot.
-      std::pair<VectorType, VectorType>
-      ghosted() const
-      {
-        IndexSet relevant;
-        DoFTools::extract_locally_relevant_dofs(*dofs, relevant);
-        VectorType a(dofs->locally_owned_dofs(),
-                     relevant,
-                     triangulation->get_communicator());
-        VectorType b(a);
-        a = u;
-        b = udot;
-        return {std::move(a), std::move(b)};
-      }
-
-      /// Refines the cells flagged, prolongating u and udot.
-      void
-      refine()
-      {
-        if (auto *distributed = as_distributed(*triangulation))
-          {
-            const auto [a, b] = ghosted();
-            parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
-              *dofs);
-            transfer.prepare_for_coarsening_and_refinement(
-              std::vector<const VectorType *>{&a, &b});
-            distributed->execute_coarsening_and_refinement();
-            distribute();
-            std::vector<VectorType *> out = {&u, &udot};
-            transfer.interpolate(out);
-          }
-        else
-          {
-            SerialTransfer<dim> transfer;
-            transfer.prepare(*dofs, {&u, &udot});
-            triangulation->execute_coarsening_and_refinement();
-            distribute();
-            transfer.interpolate(*dofs, {&u, &udot});
-          }
-      }
-    };
+    /// Reads the values of @p file into @p state's vectors on the cells
+    /// this rank owns; returns how many cells it set.
+    template <int dim>
+    unsigned int
+    read_values(const std::string &file, ComparedState<dim> &state)
+    {
+      std::ifstream in(file, std::ios::binary);
+      AssertThrow(in.good(),
+                  ExcMessage("Reference solution: there is no reference "
+                             "state '" +
+                             file + "'."));
+      std::uint64_t count = 0;
+      std::uint32_t n     = 0;
+      in.read(reinterpret_cast<char *>(&count), sizeof(count));
+      in.read(reinterpret_cast<char *>(&n), sizeof(n));
+      AssertThrow(in.good() && n == state.fe->n_dofs_per_cell(),
+                  ExcMessage("Reference solution: the state '" + file +
+                             "' does not fit its header (damaged?)."));
+      const IndexSet     &owned = state.dofs->locally_owned_dofs();
+      std::vector<double> values(2 * n);
+      std::vector<types::global_dof_index>      indices(n);
+      CellId::binary_type                       id;
+      unsigned int                              set = 0;
+      std::map<types::coarse_cell_id, unsigned> coarse_cells;
+      for (const auto &cell : state.triangulation->cell_iterators_on_level(0))
+        coarse_cells[cell->id().get_coarse_cell_id()] = cell->index();
+      for (std::uint64_t k = 0; k < count; ++k)
+        {
+          in.read(reinterpret_cast<char *>(id.data()), sizeof(id));
+          in.read(reinterpret_cast<char *>(values.data()),
+                  values.size() * sizeof(double));
+          AssertThrow(in.good(),
+                      ExcMessage("Reference solution: the state '" + file +
+                                 "' ends early."));
+          const auto cell =
+            find_cell(*state.triangulation, coarse_cells, CellId(id));
+          if (cell == state.triangulation->end() || !cell->is_active() ||
+              !cell->is_locally_owned())
+            continue;
+          typename DoFHandler<dim>::active_cell_iterator(
+            state.triangulation.get(),
+            cell->level(),
+            cell->index(),
+            state.dofs.get())
+            ->get_dof_indices(indices);
+          for (unsigned int i = 0; i < n; ++i)
+            if (owned.is_element(indices[i]))
+              {
+                state.u(indices[i])    = values[i];
+                state.udot(indices[i]) = values[n + i];
+              }
+          ++set;
+        }
+      return set;
+    }
   } // namespace
+
+
+
+  template <int dim>
+  void
+  StateComparison<dim>::write_values(const std::string     &file,
+                                     const DoFHandler<dim> &dof_handler,
+                                     const VectorType      &u,
+                                     const VectorType      &udot)
+  {
+    std::ofstream       out(file, std::ios::binary);
+    const std::uint64_t count = n_owned_cells(dof_handler.get_triangulation());
+    const std::uint32_t n     = dof_handler.get_fe().n_dofs_per_cell();
+    out.write(reinterpret_cast<const char *>(&count), sizeof(count));
+    out.write(reinterpret_cast<const char *>(&n), sizeof(n));
+    Vector<double> a(n), b(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const CellId::binary_type id = cell->id().template to_binary<dim>();
+          cell->get_dof_values(u, a);
+          cell->get_dof_values(udot, b);
+          out.write(reinterpret_cast<const char *>(id.data()), sizeof(id));
+          out.write(reinterpret_cast<const char *>(a.data()),
+                    n * sizeof(double));
+          out.write(reinterpret_cast<const char *>(b.data()),
+                    n * sizeof(double));
+        }
+    out.close();
+    stop_with_any_message(out.good() ?
+                            "" :
+                            "Cannot write the reference state '" + file + "'.",
+                          dof_handler.get_communicator());
+  }
 
 
 
@@ -113,7 +244,9 @@ namespace dyncontact
 
   template <int dim>
   double
-  StateComparison<dim>::difference(const std::string     &file,
+  StateComparison<dim>::difference(const std::string     &mesh_file,
+                                   const std::string     &values_file,
+                                   const unsigned int     reference_ranks,
                                    const unsigned int     reference_degree,
                                    const DoFHandler<dim> &dof_handler,
                                    const VectorType      &u,
@@ -121,11 +254,44 @@ namespace dyncontact
   {
     const MPI_Comm comm = coarse->get_communicator();
 
-    // the other run's state on its mesh
-    State<dim> reference(*coarse, reference_degree);
-    SemiDiscreteSystem<dim>::load_mesh(file, *reference.triangulation);
-    reference.distribute();
-    read_state_vectors(file, *reference.dofs, {&reference.u, &reference.udot});
+    // the other run's mesh (loaded once for all its states), its state
+    if (!reference || reference_mesh != mesh_file ||
+        reference->fe->degree != reference_degree)
+      {
+        reference =
+          std::make_unique<ComparedState<dim>>(*coarse, reference_degree);
+        SemiDiscreteSystem<dim>::load_mesh(mesh_file,
+                                           *reference->triangulation);
+        reference->distribute();
+        reference_mesh = mesh_file;
+      }
+    {
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int owned   = n_owned_cells(*reference->triangulation);
+      // the same ranks hold the same cells (p4est keeps the partition of a
+      // mesh loaded on as many ranks as saved it): the rank's own file;
+      // otherwise every file, each rank keeping its cells
+      unsigned int set = 0;
+      if (n_ranks == reference_ranks)
+        set = read_values(values_file + "." + std::to_string(rank), *reference);
+      if (Utilities::MPI::min(set == owned ? 1 : 0, comm) == 0)
+        {
+          set = 0;
+          for (unsigned int r = 0; r < reference_ranks; ++r)
+            set +=
+              read_values(values_file + "." + std::to_string(r), *reference);
+        }
+      stop_with_any_message(set == owned ?
+                              "" :
+                              "Reference solution: the states '" + values_file +
+                                ".*' do not cover the mesh '" + mesh_file +
+                                "'.",
+                            comm);
+      reference->u.compress(VectorOperation::insert);
+      reference->udot.compress(VectorOperation::insert);
+    }
+    const ComparedState<dim> &ref = *reference;
 
     // the difference is integrated on the reference's cells, where both
     // states are polynomials of degree at most this (exact for affine
@@ -135,11 +301,11 @@ namespace dyncontact
     const QGauss<dim>                quadrature(degree + 1);
     const FEValuesExtractors::Vector displacement(0);
     FEValues<dim>                    values_ref(mapping,
-                             *reference.fe,
+                             *ref.fe,
                              quadrature,
                              update_values | update_gradients |
                                update_JxW_values);
-    const auto [u_ref, v_ref] = reference.ghosted();
+    const auto [u_ref, v_ref] = ref.ghosted();
     std::vector<Tensor<1, dim>> v1(quadrature.size()), v2(v1);
     std::vector<Tensor<2, dim>> g1(quadrature.size()), g2(g1);
     double                      local   = 0.;
@@ -173,7 +339,7 @@ namespace dyncontact
                                  update_values | update_gradients);
         Vector<double>            cu(fe.n_dofs_per_cell()), cv(cu), tmp(cu);
         std::vector<unsigned int> path;
-        for (const auto &cell : reference.dofs->active_cell_iterators())
+        for (const auto &cell : ref.dofs->active_cell_iterators())
           {
             path.clear();
             typename Triangulation<dim>::cell_iterator c = cell;
@@ -223,7 +389,7 @@ namespace dyncontact
         AssertThrow(missing == 0,
                     ExcMessage("Reference solution: this run's mesh is finer "
                                "than the reference's (" +
-                               file +
+                               mesh_file +
                                ") somewhere: the reference must be a "
                                "refinement of it."));
         return std::sqrt(local);
@@ -231,8 +397,8 @@ namespace dyncontact
 
     // on several ranks: this run's state on a copy of its mesh, refined to
     // the other's (p4est moves the cells between the ranks)
-    State<dim> own(dof_handler.get_triangulation(),
-                   dof_handler.get_fe().degree);
+    ComparedState<dim> own(dof_handler.get_triangulation(),
+                           dof_handler.get_fe().degree);
     own.distribute();
     {
       Vector<double>                       values(own.fe->n_dofs_per_cell());
@@ -279,15 +445,15 @@ namespace dyncontact
               cells.push_back(cell);
             }
         Utilities::MPI::RemotePointEvaluation<dim> evaluation;
-        evaluation.reinit(points, *reference.triangulation, mapping);
+        evaluation.reinit(points, *ref.triangulation, mapping);
         stop_with_any_message(
           evaluation.all_points_found() ?
             "" :
-            "the reference state '" + file +
+            "the reference state '" + mesh_file +
               "' does not cover this run's mesh (another coarse mesh?).",
           comm);
         std::vector<double>       levels, buffer;
-        const Triangulation<dim> &other = *reference.triangulation;
+        const Triangulation<dim> &other = *ref.triangulation;
         evaluation.template evaluate_and_process<double>(
           levels,
           buffer,
@@ -317,8 +483,9 @@ namespace dyncontact
                 ++marked;
               }
             else if (level < cells[i]->level() && finer.empty())
-              finer = "this run's mesh is finer than the reference's (" + file +
-                      ") at level " + std::to_string(cells[i]->level()) +
+              finer = "this run's mesh is finer than the reference's (" +
+                      mesh_file + ") at level " +
+                      std::to_string(cells[i]->level()) +
                       ": the reference must be a refinement of it.";
           }
         stop_with_any_message(finer, comm);
@@ -332,7 +499,7 @@ namespace dyncontact
                              quadrature,
                              update_values | update_gradients);
     const auto [u_own, v_own] = own.ghosted();
-    for (const auto &cell : reference.dofs->active_cell_iterators())
+    for (const auto &cell : ref.dofs->active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const auto match =
@@ -355,7 +522,7 @@ namespace dyncontact
         }
     stop_with_any_message(
       missing == 0 ? "" :
-                     "the reference state '" + file +
+                     "the reference state '" + mesh_file +
                        "' has cells that this run's refined mesh does not "
                        "hold on the same rank (a mesh of another coarse mesh, "
                        "or refined otherwise).",

@@ -573,10 +573,10 @@ namespace dyncontact
 
 
 
-  /// A state's mesh and @p ghosted vectors into @p file, as a checkpoint
-  /// writes them (p4est's files, or SerialMeshFile on deal.II's serial
-  /// triangulation): readable on any number of ranks into a triangulation
-  /// that holds the same coarse mesh.
+  /// A state's mesh and @p ghosted vectors (none: the mesh alone) into @p
+  /// file, as a checkpoint writes them (p4est's files, or SerialMeshFile on
+  /// deal.II's serial triangulation): readable on any number of ranks into
+  /// a triangulation that holds the same coarse mesh.
   template <int dim>
   void
   write_state_file(const std::string                     &file,

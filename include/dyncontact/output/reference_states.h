@@ -102,6 +102,10 @@ namespace dyncontact
     /// The comparison with states on other meshes (made at the first
     /// comparison: it holds a copy of the coarse mesh).
     mutable std::unique_ptr<StateComparison<dim>> comparison;
+    /// A writer's flag that the mesh changed since it was last written
+    /// (set by the triangulation's signal), and the file it was written to.
+    mutable std::shared_ptr<bool> mesh_changed;
+    mutable std::string           mesh_name;
   };
 } // namespace dyncontact
 

@@ -17,6 +17,9 @@ namespace dyncontact
   template <int dim>
   class Scene;
 
+  template <int dim>
+  struct ComparedState;
+
   /**
    * The difference of this run's state and a state written by another run
    * (write_state_file()) on a mesh of the same coarse mesh, in the physical
@@ -49,11 +52,23 @@ namespace dyncontact
                     std::unique_ptr<Triangulation<dim>> coarse);
     ~StateComparison();
 
+    /// Writes the values of @p u and @p udot (ghosted) on each cell this
+    /// rank owns, with the cell's id, to @p file (one file per rank).
+    static void
+    write_values(const std::string     &file,
+                 const DoFHandler<dim> &dof_handler,
+                 const VectorType      &u,
+                 const VectorType      &udot);
+
     /// ||(u - u_ref, udot - udot_ref)||_E with (u_ref, udot_ref) of degree
-    /// @p reference_degree read from @p file; @p u and @p udot ghosted on
-    /// @p dof_handler.
+    /// @p reference_degree on the mesh of @p mesh_file (loaded once for all
+    /// states of that mesh), their values in @p values_file.<rank>, written
+    /// by @p reference_ranks ranks; @p u and @p udot ghosted on @p
+    /// dof_handler.
     double
-    difference(const std::string     &file,
+    difference(const std::string     &mesh_file,
+               const std::string     &values_file,
+               const unsigned int     reference_ranks,
                const unsigned int     reference_degree,
                const DoFHandler<dim> &dof_handler,
                const VectorType      &u,
@@ -63,6 +78,9 @@ namespace dyncontact
     const Scene<dim>                   &scene;
     const Mapping<dim>                 &mapping;
     std::unique_ptr<Triangulation<dim>> coarse;
+    /// The reference's mesh and state, and the file of that mesh.
+    mutable std::unique_ptr<ComparedState<dim>> reference;
+    mutable std::string                         reference_mesh;
   };
 } // namespace dyncontact
 
