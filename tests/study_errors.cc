@@ -39,34 +39,7 @@ main(int argc, char **argv)
   dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
-  std::ofstream("bar.prm") << R"(
-set Dimension = 2
-subsection Scene
-  set Name = bar impact
-  subsection Bar impact
-    set Length             = 1
-    set Height             = 0.1
-    set Impact velocity    = 1
-    set Initial gap        = 0.1
-    set Cells along length = 10
-  end
-end
-subsection Material
-  set Young's modulus = 1
-  set Poisson's ratio = 0
-  set Density         = 1
-end
-subsection Time integration
-  set Scheme    = N-CS++
-  set Time step = 0.01
-  set End time  = 2.5
-end
-subsection Postprocess
-  subsection Error energy norm
-    set Interval = every step
-  end
-end
-)";
+  std::ofstream("bar.prm") << bar_prm(2, "N-CS++", 10, 0.01, 2.5);
   const std::string command = std::string(DYNCONTACT_PYTHON) + " " +
                               DYNCONTACT_SOURCE_DIR + "/tools/study.py " +
                               "--executable " + DYNCONTACT_EXECUTABLE +

@@ -449,7 +449,7 @@ namespace dyncontact
         stop_with_any_message(
           evaluation.all_points_found() ?
             "" :
-            "the reference state '" + mesh_file +
+            "Reference solution: the reference state '" + mesh_file +
               "' does not cover this run's mesh (another coarse mesh?).",
           comm);
         std::vector<double>       levels, buffer;
@@ -483,10 +483,10 @@ namespace dyncontact
                 ++marked;
               }
             else if (level < cells[i]->level() && finer.empty())
-              finer = "this run's mesh is finer than the reference's (" +
-                      mesh_file + ") at level " +
-                      std::to_string(cells[i]->level()) +
-                      ": the reference must be a refinement of it.";
+              finer =
+                "Reference solution: this run's mesh is finer than the reference's (" +
+                mesh_file + ") at level " + std::to_string(cells[i]->level()) +
+                ": the reference must be a refinement of it.";
           }
         stop_with_any_message(finer, comm);
         if (Utilities::MPI::sum(marked, comm) == 0)
@@ -522,7 +522,7 @@ namespace dyncontact
         }
     stop_with_any_message(
       missing == 0 ? "" :
-                     "the reference state '" + mesh_file +
+                     "Reference solution: the reference state '" + mesh_file +
                        "' has cells that this run's refined mesh does not "
                        "hold on the same rank (a mesh of another coarse mesh, "
                        "or refined otherwise).",
