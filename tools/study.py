@@ -273,7 +273,11 @@ for c, (label, items) in enumerate(configurations):
         extra = list(items)
         if label == "adaptive":
             if max0 + k > g0 + finest:
-                continue  # finer than the reference somewhere: not comparable
+                print("   adaptive level %d left out: its Maximum level %d is "
+                      "finer than the reference's level %d (a study of %d "
+                      "levels or more compares it)" %
+                      (k, max0 + k, g0 + finest, max0 + k - g0 + 1))
+                continue
             extra += ["Mesh refinement/Minimum level=%d" % (min0 + k),
                       "Mesh refinement/Maximum level=%d" % (max0 + k)]
         if c == 0 and k == finest:
