@@ -85,7 +85,11 @@ main(int argc, char **argv)
      "  set Maximum level = 1\nend\n"},
     {"reference_states_missing_adaptive_mesh",
      "subsection Mesh refinement\n  set Refinement interval = 2\nend\n"
-     "subsection Reference solution\n  set Compare with states = true\nend\n"},
+     "subsection Time integration\n  set End time = 0.0125\nend\n"
+     "subsection Reference solution\n  set Compare with states = true\n"
+     "  set Interval = 0.0125\nend\n"},
+    {"reference_interval_beyond_end_time",
+     "subsection Reference solution\n  set Write states = true\nend\n"},
     {"resume_without_checkpoint",
      "set Output directory = never-run\n"
      "subsection Checkpointing\n  set Resume = true\nend\n"},

@@ -51,9 +51,11 @@ Usage:
 """
 import argparse
 import csv
+import hashlib
 import math
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -104,11 +106,16 @@ if args.theta is not None and not 0 < args.theta <= 0.5:
     fail("--theta must be in (0, 0.5] (now %g)" % args.theta)
 
 
+signal.signal(signal.SIGINT, lambda *_: fail(
+    "interrupted: the finished runs are kept; run the same command again "
+    "to go on"))
+
+
 # --- the input's entries (subsection/entry -> value), includes expanded
-def read_prm(path, entries, section=()):
-    base = os.path.dirname(os.path.abspath(path))
+def read_prm(path, entries, section=(), lines=None):
+    base = os.path.dirname(os.path.abspath(path)) if path else "."
     path_stack = list(section)
-    for raw in open(path):
+    for raw in (lines if lines is not None else open(path)):
         line = raw.split("#", 1)[0].strip()
         while line.endswith("\\"):
             line = line[:-1]
@@ -127,7 +134,14 @@ def read_prm(path, entries, section=()):
     return entries
 
 
-prm = read_prm(args.prm, {})
+# the program's defaults (its --help prints every entry), then the input's
+defaults = subprocess.run([executable, "--help"], capture_output=True,
+                          text=True).stdout.splitlines()
+defaults = [line for line in defaults
+            if line.strip().startswith(("set ", "subsection ", "end"))]
+prm = read_prm(None, {}, lines=defaults)
+prm.update(read_prm(args.prm, {}))
+input_text = open(args.prm).read()
 
 
 def entry(name, default):
@@ -231,11 +245,6 @@ def overrides(items):
 
 def run(name, items, reference):
     directory = os.path.join(out, name)
-    if os.path.exists(os.path.join(directory, "done")):
-        print("   %-28s done before (not repeated)" % name, flush=True)
-        return directory
-    shutil.rmtree(directory, ignore_errors=True)
-    os.makedirs(directory)
     text = "include %s\n" % os.path.abspath(args.prm) + overrides(files + items + [
         "Output directory=" + directory,
         "Output/Write vtu=false",
@@ -246,6 +255,16 @@ def run(name, items, reference):
         "Reference solution/Interval=%r" % interval,
         "Reference solution/" + ("Write states" if reference else
                                  "Compare with states") + "=true"])
+    # a run is done if it ran this text on this input (and, if it compares,
+    # against this reference)
+    identity = hashlib.sha256((text + input_text + reference_identity)
+                              .encode()).hexdigest()
+    done = os.path.join(directory, "done")
+    if os.path.exists(done) and open(done).readline().strip() == identity:
+        print("   %-28s done before (not repeated)" % name, flush=True)
+        return directory, identity
+    shutil.rmtree(directory, ignore_errors=True)
+    os.makedirs(directory)
     prm_file = directory + ".prm"
     with open(prm_file, "w") as f:
         f.write(text)
@@ -255,14 +274,17 @@ def run(name, items, reference):
     start = time.time()
     result = subprocess.run(command, capture_output=True, text=True,
                             cwd=os.path.dirname(os.path.abspath(args.prm)))
+    if result.returncode < 0:
+        fail("the run %s was killed by signal %d (its input: %s)" %
+             (name, -result.returncode, prm_file))
     if result.returncode != 0:
         message = (result.stderr.strip() or result.stdout.strip()).splitlines()
         fail("the run %s failed (its input: %s):\n%s" %
              (name, prm_file, "\n".join(message[-8:])))
-    with open(os.path.join(directory, "done"), "w") as f:
-        f.write("%.3f s\n" % (time.time() - start))
+    with open(done, "w") as f:
+        f.write("%s\n%.3f s\n" % (identity, time.time() - start))
     print("   %-28s %.1f s" % (name, time.time() - start), flush=True)
-    return directory
+    return directory, identity
 
 
 # --- the runs: the reference first (the others compare with its states)
@@ -272,14 +294,22 @@ for c, (label, items) in enumerate(configurations):
         level, mesh_level, tau = level_entries(k)
         extra = list(items)
         if label == "adaptive":
-            if max0 + k > g0 + finest:
-                print("   adaptive level %d left out: its Maximum level %d is "
-                      "finer than the reference's level %d (a study of %d "
-                      "levels or more compares it)" %
-                      (k, max0 + k, g0 + finest, max0 + k - g0 + 1))
+            shift = k if args.refine != "tau" else 0
+            reference_level = level_entries(finest)[1]
+            if max0 + shift > reference_level:
+                if args.refine == "tau":
+                    print("   adaptive level %d left out: its Maximum level %d "
+                          "is finer than the reference's level %d, which "
+                          "--refine tau keeps (use --refine h+tau or h)" %
+                          (k, max0, reference_level))
+                else:
+                    print("   adaptive level %d left out: its Maximum level %d "
+                          "is finer than the reference's level %d (a study "
+                          "of %d levels or more compares it)" %
+                          (k, max0 + k, reference_level, max0 + k - g0 + 1))
                 continue
-            extra += ["Mesh refinement/Minimum level=%d" % (min0 + k),
-                      "Mesh refinement/Maximum level=%d" % (max0 + k)]
+            extra += ["Mesh refinement/Minimum level=%d" % (min0 + shift),
+                      "Mesh refinement/Maximum level=%d" % (max0 + shift)]
         if c == 0 and k == finest:
             continue
         plan.append((label, k, "%s-level%d" % (label.replace(" ", "_").replace("=", ""), k),
@@ -291,10 +321,12 @@ if os.path.exists(os.path.join(out, reference_name, "done")) and \
         not os.path.exists(os.path.join(states, "state_00000.header")):
     os.remove(os.path.join(out, reference_name, "done"))
 level, ref_mesh_level, ref_tau = level_entries(finest)
-reference_dir = run(reference_name, level + configurations[0][1], True)
+reference_identity = ""
+reference_dir, reference_identity = run(reference_name,
+                                        level + configurations[0][1], True)
 directories = {}
 for label, k, name, items, mesh_level, tau in plan:
-    directories[(label, k)] = (run(name, items, False), mesh_level, tau)
+    directories[(label, k)] = (run(name, items, False)[0], mesh_level, tau)
 directories[(configurations[0][0], finest)] = (reference_dir, ref_mesh_level, ref_tau)
 
 
@@ -351,6 +383,15 @@ def bodies(rows):
     return [("", "body1")] if "mean_displacement_x" in rows[0] else []
 
 
+def time_difference(a, b):
+    """|a - b| of two event times, inf if only one of them happened."""
+    if a != a and b != b:
+        return 0.
+    if a != a or b != b:
+        return float("inf")
+    return abs(a - b)
+
+
 def contact_times(points):
     """First contact and last release of a force history (nan if none)."""
     on = [t for t, f in points if f > 0]
@@ -393,8 +434,8 @@ def measures(directory, is_reference):
                  (mine[i + 1][0] - mine[i][0]) for i in range(len(mine) - 1))
         force_l1 = max(force_l1, l1 / (peak * (mine[-1][0] - mine[0][0])))
         a, b = contact_times(mine), contact_times(ref)
-        contact = max(contact, abs(a[0] - b[0]) if a[0] == a[0] or b[0] == b[0] else 0.)
-        release = max(release, abs(a[1] - b[1]) if a[1] == a[1] or b[1] == b[1] else 0.)
+        contact = max(contact, time_difference(a[0], b[0]))
+        release = max(release, time_difference(a[1], b[1]))
     m.update({"force max": force_max, "force L1": force_l1,
               "contact": contact, "release": release})
     position_max, position_end = 0., 0.

@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <dyncontact/base/checksum.h>
 #include <dyncontact/base/collective_errors.h>
 #include <dyncontact/base/triangulation.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -136,13 +137,20 @@ namespace dyncontact
     /// this rank owns; returns how many cells it set.
     template <int dim>
     unsigned int
-    read_values(const std::string &file, ComparedState<dim> &state)
+    read_values(const std::string  &file,
+                const std::string  &checksum,
+                ComparedState<dim> &state)
     {
       std::ifstream in(file, std::ios::binary);
       AssertThrow(in.good(),
                   ExcMessage("Reference solution: there is no reference "
                              "state '" +
                              file + "'."));
+      AssertThrow(checksum_of_file(file) == checksum,
+                  ExcMessage("Reference solution: the reference state '" +
+                             file +
+                             "' is damaged (its checksum differs from the "
+                             "one in its header): run the reference again."));
       std::uint64_t count = 0;
       std::uint32_t n     = 0;
       in.read(reinterpret_cast<char *>(&count), sizeof(count));
@@ -244,13 +252,14 @@ namespace dyncontact
 
   template <int dim>
   double
-  StateComparison<dim>::difference(const std::string     &mesh_file,
-                                   const std::string     &values_file,
-                                   const unsigned int     reference_ranks,
-                                   const unsigned int     reference_degree,
-                                   const DoFHandler<dim> &dof_handler,
-                                   const VectorType      &u,
-                                   const VectorType      &udot) const
+  StateComparison<dim>::difference(
+    const std::string              &mesh_file,
+    const std::string              &values_file,
+    const std::vector<std::string> &values_checksums,
+    const unsigned int              reference_degree,
+    const DoFHandler<dim>          &dof_handler,
+    const VectorType               &u,
+    const VectorType               &udot) const
   {
     const MPI_Comm comm = coarse->get_communicator();
 
@@ -266,6 +275,7 @@ namespace dyncontact
         reference_mesh = mesh_file;
       }
     {
+      const unsigned int reference_ranks = values_checksums.size();
       const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
       const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
       const unsigned int owned   = n_owned_cells(*reference->triangulation);
@@ -274,13 +284,16 @@ namespace dyncontact
       // otherwise every file, each rank keeping its cells
       unsigned int set = 0;
       if (n_ranks == reference_ranks)
-        set = read_values(values_file + "." + std::to_string(rank), *reference);
+        set = read_values(values_file + "." + std::to_string(rank),
+                          values_checksums[rank],
+                          *reference);
       if (Utilities::MPI::min(set == owned ? 1 : 0, comm) == 0)
         {
           set = 0;
           for (unsigned int r = 0; r < reference_ranks; ++r)
-            set +=
-              read_values(values_file + "." + std::to_string(r), *reference);
+            set += read_values(values_file + "." + std::to_string(r),
+                               values_checksums[r],
+                               *reference);
         }
       stop_with_any_message(set == owned ?
                               "" :

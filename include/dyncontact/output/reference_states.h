@@ -105,7 +105,9 @@ namespace dyncontact
     /// A writer's flag that the mesh changed since it was last written
     /// (set by the triangulation's signal), and the file it was written to.
     mutable std::shared_ptr<bool> mesh_changed;
-    mutable std::string           mesh_name;
+    mutable std::string           mesh_name, mesh_checksum;
+    /// A comparing run's last mesh file whose checksum it checked.
+    mutable std::string checked_mesh;
   };
 } // namespace dyncontact
 

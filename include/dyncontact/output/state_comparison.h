@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dyncontact
 {
@@ -63,16 +64,17 @@ namespace dyncontact
     /// ||(u - u_ref, udot - udot_ref)||_E with (u_ref, udot_ref) of degree
     /// @p reference_degree on the mesh of @p mesh_file (loaded once for all
     /// states of that mesh), their values in @p values_file.<rank>, written
-    /// by @p reference_ranks ranks; @p u and @p udot ghosted on @p
+    /// by as many ranks as @p values_checksums has (each file's checksum,
+    /// checked before it is read); @p u and @p udot ghosted on @p
     /// dof_handler.
     double
-    difference(const std::string     &mesh_file,
-               const std::string     &values_file,
-               const unsigned int     reference_ranks,
-               const unsigned int     reference_degree,
-               const DoFHandler<dim> &dof_handler,
-               const VectorType      &u,
-               const VectorType      &udot) const;
+    difference(const std::string              &mesh_file,
+               const std::string              &values_file,
+               const std::vector<std::string> &values_checksums,
+               const unsigned int              reference_degree,
+               const DoFHandler<dim>          &dof_handler,
+               const VectorType               &u,
+               const VectorType               &udot) const;
 
   private:
     const Scene<dim>                   &scene;
