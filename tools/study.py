@@ -203,7 +203,7 @@ def level_entries(k):
 # inputs (which live in the study's folder)
 input_folder = os.path.dirname(os.path.abspath(args.prm))
 files = []
-if "Scene/Gmsh/Mesh file" in prm:
+if prm.get("Scene/Gmsh/Mesh file", "").strip():
     files.append("Scene/Gmsh/Mesh file=" +
                  os.path.join(input_folder, prm["Scene/Gmsh/Mesh file"]))
 if "cad " in prm.get("Scene/Gmsh/Manifolds", ""):
@@ -510,18 +510,34 @@ def estimate(e):
         candidates.append(("uncorrelated", r, e[-1] * e[-1] / e[-2], check))
     if not candidates:
         return ("-", float("nan"), float("nan"), "not converging")
+    def unconfirmed(model, r, error, note):
+        # an 'uncorrelated' rate that the levels before do not confirm: the
+        # reference's error lies between the extrapolation (the rate holds)
+        # and the last difference (the last refinement gained nothing); the
+        # estimate is their geometric middle (half the rate), the range is
+        # printed
+        if model != "uncorrelated":
+            return (model, r, error, note)
+        middle = math.sqrt(error * e[-1])
+        return (model, r, middle, "%s; range %.3g-%.3g" % (note, error, e[-1]))
+
     if n < 3:
         # no level before to decide: the larger estimate, and the other
         model, r, error, _ = max(candidates, key=lambda c: c[2])
         others = [c for c in candidates if c[0] != model]
-        return (model, r, error, "unchecked (three levels%s)" %
-                ("; %s: rate %.2f, %.3g" % (others[0][0], others[0][1],
-                                           others[0][2]) if others else ""))
+        return unconfirmed(model, r, error, "unchecked (three levels%s)" % (
+            "; %s: rate %.2f, %.3g" % (others[0][0], others[0][1],
+                                       others[0][2]) if others else ""))
     spread = lambda c: abs(c[3] - c[1]) / c[1] if c[3] == c[3] else float("inf")
-    model, r, error, check = min(candidates, key=spread)
-    if spread((model, r, error, check)) <= 0.25:
+    # the models that the levels before confirm (their rate within 25 %):
+    # of these the larger estimate, as with three levels
+    confirmed = [c for c in candidates if spread(c) <= 0.25]
+    if confirmed:
+        model, r, error, check = max(confirmed, key=lambda c: c[2])
         return (model, r, error, "asymptotic (rate %.2f before)" % check)
-    return (model, r, error, "not asymptotic (rate %.2f before)" % check)
+    model, r, error, check = min(candidates, key=spread)
+    return unconfirmed(model, r, error,
+                       "not asymptotic (rate %.2f before)" % check)
 
 
 estimates = {}

@@ -1,3 +1,4 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/solution_transfer.h>
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <map>
 
@@ -31,6 +33,11 @@ namespace dyncontact
     std::unique_ptr<FESystem<dim>>      fe;
     std::unique_ptr<DoFHandler<dim>>    dofs;
     VectorType                          u, udot;
+    /// A state read from files: the values of u, then of udot, on each
+    /// active cell this rank owns (by its active cell index).
+    std::vector<double> cell_values;
+    /// The bytes of the last file read.
+    std::string buffer;
 
     ComparedState(const Triangulation<dim> &source, const unsigned int degree)
       : triangulation(make_triangulation<dim>(as_distributed(source) == nullptr,
@@ -133,8 +140,9 @@ namespace dyncontact
       return cell;
     }
 
-    /// Reads the values of @p file into @p state's vectors on the cells
-    /// this rank owns; returns how many cells it set.
+    /// Reads the values of @p file into @p state's cell_values on the
+    /// cells this rank owns; returns how many cells it set. The file is
+    /// read once: its checksum is that of the bytes read.
     template <int dim>
     unsigned int
     read_values(const std::string  &file,
@@ -146,21 +154,34 @@ namespace dyncontact
                   ExcMessage("Reference solution: there is no reference "
                              "state '" +
                              file + "'."));
-      AssertThrow(checksum_of_file(file) == checksum,
+      // read at once into a buffer kept between the states (no new pages)
+      in.seekg(0, std::ios::end);
+      const std::streamoff size = in.tellg();
+      in.seekg(0);
+      std::string &bytes = state.buffer;
+      bytes.resize(std::max<std::streamoff>(size, 0));
+      in.read(bytes.data(), bytes.size());
+      AssertThrow(in.good() && checksum_of_text(bytes) == checksum,
                   ExcMessage("Reference solution: the reference state '" +
                              file +
                              "' is damaged (its checksum differs from the "
                              "one in its header): run the reference again."));
       std::uint64_t count = 0;
       std::uint32_t n     = 0;
-      in.read(reinterpret_cast<char *>(&count), sizeof(count));
-      in.read(reinterpret_cast<char *>(&n), sizeof(n));
-      AssertThrow(in.good() && n == state.fe->n_dofs_per_cell(),
+      std::size_t   at    = 0;
+      const auto    take  = [&](void *to, const std::size_t size) {
+        AssertThrow(at + size <= bytes.size(),
+                    ExcMessage("Reference solution: the state '" + file +
+                               "' ends early."));
+        std::memcpy(to, bytes.data() + at, size);
+        at += size;
+      };
+      take(&count, sizeof(count));
+      take(&n, sizeof(n));
+      AssertThrow(n == state.fe->n_dofs_per_cell(),
                   ExcMessage("Reference solution: the state '" + file +
                              "' does not fit its header (damaged?)."));
-      const IndexSet     &owned = state.dofs->locally_owned_dofs();
-      std::vector<double> values(2 * n);
-      std::vector<types::global_dof_index>      indices(n);
+      state.cell_values.resize(state.triangulation->n_active_cells() * 2 * n);
       CellId::binary_type                       id;
       unsigned int                              set = 0;
       std::map<types::coarse_cell_id, unsigned> coarse_cells;
@@ -168,29 +189,21 @@ namespace dyncontact
         coarse_cells[cell->id().get_coarse_cell_id()] = cell->index();
       for (std::uint64_t k = 0; k < count; ++k)
         {
-          in.read(reinterpret_cast<char *>(id.data()), sizeof(id));
-          in.read(reinterpret_cast<char *>(values.data()),
-                  values.size() * sizeof(double));
-          AssertThrow(in.good(),
+          take(id.data(), sizeof(id));
+          const std::size_t values = at;
+          AssertThrow(at + 2 * n * sizeof(double) <= bytes.size(),
                       ExcMessage("Reference solution: the state '" + file +
                                  "' ends early."));
+          at += 2 * n * sizeof(double);
           const auto cell =
             find_cell(*state.triangulation, coarse_cells, CellId(id));
           if (cell == state.triangulation->end() || !cell->is_active() ||
               !cell->is_locally_owned())
             continue;
-          typename DoFHandler<dim>::active_cell_iterator(
-            state.triangulation.get(),
-            cell->level(),
-            cell->index(),
-            state.dofs.get())
-            ->get_dof_indices(indices);
-          for (unsigned int i = 0; i < n; ++i)
-            if (owned.is_element(indices[i]))
-              {
-                state.u(indices[i])    = values[i];
-                state.udot(indices[i]) = values[n + i];
-              }
+          std::memcpy(state.cell_values.data() +
+                        std::size_t(cell->active_cell_index()) * 2 * n,
+                      bytes.data() + values,
+                      2 * n * sizeof(double));
           ++set;
         }
       return set;
@@ -301,8 +314,6 @@ namespace dyncontact
                                 ".*' do not cover the mesh '" + mesh_file +
                                 "'.",
                             comm);
-      reference->u.compress(VectorOperation::insert);
-      reference->udot.compress(VectorOperation::insert);
     }
     const ComparedState<dim> &ref = *reference;
 
@@ -318,15 +329,22 @@ namespace dyncontact
                              quadrature,
                              update_values | update_gradients |
                                update_JxW_values);
-    const auto [u_ref, v_ref] = ref.ghosted();
-    std::vector<Tensor<1, dim>> v1(quadrature.size()), v2(v1);
-    std::vector<Tensor<2, dim>> g1(quadrature.size()), g2(g1);
-    double                      local   = 0.;
-    unsigned int                missing = 0;
+    const unsigned int               n_ref = ref.fe->n_dofs_per_cell();
+    Vector<double>                   u_ref(n_ref), v_ref(n_ref);
+    std::vector<Tensor<1, dim>>      v1(quadrature.size()), v2(v1);
+    std::vector<Tensor<2, dim>>      g1(quadrature.size()), g2(g1);
+    double                           local   = 0.;
+    unsigned int                     missing = 0;
     // 1/2 rho |v1 - v2|^2 + 1/2 sigma(e) : eps(e) on the reference's cell
     const auto add = [&](const auto &cell) {
-      values_ref[displacement].get_function_values(v_ref, v1);
-      values_ref[displacement].get_function_gradients(u_ref, g1);
+      const double *values = ref.cell_values.data() +
+                             std::size_t(cell->active_cell_index()) * 2 * n_ref;
+      std::copy(values, values + n_ref, u_ref.begin());
+      std::copy(values + n_ref, values + 2 * n_ref, v_ref.begin());
+      values_ref[displacement].get_function_values_from_local_dof_values(
+        make_array_view(v_ref), v1);
+      values_ref[displacement].get_function_gradients_from_local_dof_values(
+        make_array_view(u_ref), g1);
       const Material &material = scene.material(cell->material_id());
       for (unsigned int q = 0; q < quadrature.size(); ++q)
         {
@@ -350,6 +368,9 @@ namespace dyncontact
                                  fe,
                                  quadrature,
                                  update_values | update_gradients);
+        const bool same_element = fe.get_name() == ref.fe->get_name();
+        // plain copies: a Trilinos vector's entries are slow to look up
+        const Vector<double>      u_here(u), udot_here(udot);
         Vector<double>            cu(fe.n_dofs_per_cell()), cv(cu), tmp(cu);
         std::vector<unsigned int> path;
         for (const auto &cell : ref.dofs->active_cell_iterators())
@@ -374,8 +395,8 @@ namespace dyncontact
               }
             const typename DoFHandler<dim>::active_cell_iterator source(
               &mesh, here->level(), here->index(), &dof_handler);
-            source->get_dof_values(u, cu);
-            source->get_dof_values(udot, cv);
+            source->get_dof_values(u_here, cu);
+            source->get_dof_values(udot_here, cv);
             for (; step != path.rend(); ++step)
               {
                 const auto &prolongation = fe.get_prolongation_matrix(
@@ -386,17 +407,16 @@ namespace dyncontact
                 cv = tmp;
               }
             values_ref.reinit(cell);
-            values_own.reinit(typename Triangulation<dim>::cell_iterator(cell));
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              {
-                v2[q] = 0;
-                g2[q] = 0;
-                for (unsigned int i = 0; i < cu.size(); ++i)
-                  {
-                    v2[q] += cv[i] * values_own[displacement].value(i, q);
-                    g2[q] += cu[i] * values_own[displacement].gradient(i, q);
-                  }
-              }
+            // this run's element on the reference's cell: the reference's
+            // shape functions if the elements are the same
+            FEValues<dim> &values = same_element ? values_ref : values_own;
+            if (!same_element)
+              values_own.reinit(
+                typename Triangulation<dim>::cell_iterator(cell));
+            values[displacement].get_function_values_from_local_dof_values(
+              make_array_view(cv), v2);
+            values[displacement].get_function_gradients_from_local_dof_values(
+              make_array_view(cu), g2);
             add(cell);
           }
         AssertThrow(missing == 0,
