@@ -461,9 +461,34 @@ namespace dyncontact
       own.udot.compress(VectorOperation::insert);
     }
 
+    // the cells refined in each cycle are the same as long as both meshes
+    // are: a signature of this run's mesh (its cells' ids) and the other's
+    // file
+    double signature = 0.;
+    for (const auto &cell :
+         dof_handler.get_triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        signature += std::hash<std::string>()(cell->id().to_string()) % 1000003;
+    const std::string cycles_key =
+      mesh_file + "/" +
+      std::to_string(dof_handler.get_triangulation().n_global_active_cells()) +
+      "/" + std::to_string(Utilities::MPI::sum(signature, comm));
+    const bool known = cycles_key == refinement_key;
+    if (known)
+      for (const auto &cycle : refinement_cycles)
+        {
+          for (const auto &id : cycle)
+            own.triangulation->create_cell_iterator(id)->set_refine_flag();
+          own.refine();
+        }
+    else
+      {
+        refinement_key = cycles_key;
+        refinement_cycles.clear();
+      }
     // refine where the other mesh is finer: its level at a point of each
     // cell that no refinement puts on a face (1/3 is no dyadic fraction)
-    for (;;)
+    while (!known)
       {
         std::vector<Point<dim>>                                        points;
         std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
@@ -524,6 +549,10 @@ namespace dyncontact
         stop_with_any_message(finer, comm);
         if (Utilities::MPI::sum(marked, comm) == 0)
           break;
+        refinement_cycles.emplace_back();
+        for (const auto &cell : cells)
+          if (cell->refine_flag_set())
+            refinement_cycles.back().push_back(cell->id());
         own.refine();
       }
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/grid/cell_id.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -83,6 +84,11 @@ namespace dyncontact
     /// The reference's mesh and state, and the file of that mesh.
     mutable std::unique_ptr<ComparedState<dim>> reference;
     mutable std::string                         reference_mesh;
+    /// On several ranks: the cells of this run's mesh refined in each cycle
+    /// to reach the reference's (this rank's), and the meshes they were
+    /// found for.
+    mutable std::vector<std::vector<CellId>> refinement_cycles;
+    mutable std::string                      refinement_key;
   };
 } // namespace dyncontact
 
