@@ -48,12 +48,14 @@ Usage:
   tools/study.py input.prm --levels N [--refine h+tau|h|tau]
       [--degree-plus-one] [--theta T] [--no-adaptive] [--samples K]
       [--target E] [--mpi R] [--out DIR] [--executable build/dyncontact]
+      [--adaptive-variant LABEL:ENTRY=VALUE[;ENTRY=VALUE...]] ...
 """
 import argparse
 import csv
 import hashlib
 import math
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -84,6 +86,11 @@ parser.add_argument("--samples", type=int, default=10,
 parser.add_argument("--target", type=float, default=None,
                     help="relative energy-norm error for the advice "
                          "(default: twice the reference's estimate)")
+parser.add_argument("--adaptive-variant", action="append", default=[],
+                    metavar="LABEL:ENTRY=VALUE[;ENTRY=VALUE...]",
+                    help="an adaptive configuration more: the input with "
+                    "these entries (e.g. 'tol:Mesh refinement/Coarsening "
+                    "tolerance=1e-4'); repeatable")
 parser.add_argument("--mpi", type=int, default=1, help="MPI ranks per run")
 parser.add_argument("--out", default=None,
                     help="folder of the study (default: study-<input name>)")
@@ -230,6 +237,16 @@ if args.theta is not None:
                            ["Time integration/Numerical dissipation=%r" % args.theta]))
 if adaptive_input and not args.no_adaptive:
     configurations.append(("adaptive", []))
+for variant in args.adaptive_variant:
+    label, _, entries = variant.partition(":")
+    items = [e.strip() for e in entries.split(";") if e.strip()]
+    if not label.strip() or not items or any("=" not in e for e in items):
+        fail("--adaptive-variant '%s': give LABEL:ENTRY=VALUE[;ENTRY=VALUE...], "
+             "e.g. 'tol:Mesh refinement/Coarsening tolerance=1e-4'" % variant)
+    if not adaptive_input or args.no_adaptive:
+        fail("--adaptive-variant needs an input that adapts its mesh (Mesh "
+             "refinement/Refinement interval > 0) and no --no-adaptive")
+    configurations.append(("adaptive " + label.strip(), items))
 
 
 def overrides(items):
@@ -293,26 +310,28 @@ for c, (label, items) in enumerate(configurations):
     for k in range(N):
         level, mesh_level, tau = level_entries(k)
         extra = list(items)
-        if label == "adaptive":
+        if label.startswith("adaptive"):
             shift = k if args.refine != "tau" else 0
             reference_level = level_entries(finest)[1]
             if max0 + shift > reference_level:
                 if args.refine == "tau":
-                    print("   adaptive level %d left out: its Maximum level %d "
+                    print("   %s level %d left out: its Maximum level %d "
                           "is finer than the reference's level %d, which "
                           "--refine tau keeps (use --refine h+tau or h)" %
-                          (k, max0, reference_level))
+                          (label, k, max0, reference_level))
                 else:
-                    print("   adaptive level %d left out: its Maximum level %d "
+                    print("   %s level %d left out: its Maximum level %d "
                           "is finer than the reference's level %d (a study "
                           "of %d levels or more compares it)" %
-                          (k, max0 + k, reference_level, max0 + k - g0 + 1))
+                          (label, k, max0 + k, reference_level,
+                           max0 + k - g0 + 1))
                 continue
             extra += ["Mesh refinement/Minimum level=%d" % (min0 + shift),
                       "Mesh refinement/Maximum level=%d" % (max0 + shift)]
         if c == 0 and k == finest:
             continue
-        plan.append((label, k, "%s-level%d" % (label.replace(" ", "_").replace("=", ""), k),
+        plan.append((label, k, "%s-level%d" % (re.sub(r"[^A-Za-z0-9_.+-]", "",
+                                                      label.replace(" ", "_")), k),
                      level + extra, mesh_level, tau))
 reference_name = "reference-level%d" % finest
 print("study of %s: %d levels (%s), %d configuration(s), in %s" %

@@ -61,6 +61,7 @@ namespace dyncontact
       tau,
       timer);
     record.add(adaptation.energy_change, adaptation.penetration);
+    record.add_coarsening(coarsening_limited.first, coarsening_limited.second);
     return adaptation.changed;
   }
 

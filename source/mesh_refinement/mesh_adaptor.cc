@@ -76,6 +76,19 @@ namespace dyncontact
       "until the next adaptation (times the levels a cell still has to "
       "climb, one per adaptation), so that the front stays inside it. "
       "Dimensionless, 0 to 100; 0: no widening.");
+    prm.declare_entry(
+      "Coarsening tolerance",
+      "0",
+      Patterns::Double(0., 1.),
+      "The largest share of the energy (kinetic and elastic, J) that one "
+      "adaptation's coarsening may remove: a family of cells flagged for "
+      "coarsening is coarsened only if what the transfer to its parent "
+      "removes (u and u_dot interpolated to the parent and prolongated "
+      "back; its energy 1/2 ||v||^2_L2(rho) + 1/2 a(u, u)) is at most this "
+      "value times the energy times the family's share of the bodies' "
+      "volume, so that one adaptation removes at most this share of the "
+      "energy. Dimensionless, 0 to 1; 0: no limit. Statistics columns "
+      "coarsening_refused (families) and coarsening_removed (J) when > 0.");
     std::string documentation;
     for (const auto &info :
          PluginRegistry<MeshRefinement::Interface>::plugins())
@@ -104,14 +117,15 @@ namespace dyncontact
   MeshAdaptor<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh refinement");
-    interval            = prm.get_integer("Refinement interval");
-    min_level           = prm.get_integer("Minimum level");
-    max_level           = prm.get_integer("Maximum level");
-    refine_fraction     = prm.get_double("Refine fraction");
-    coarsen_fraction    = prm.get_double("Coarsen fraction");
-    initial_refinements = prm.get_integer("Initial contact refinements");
-    front_widening      = prm.get_double("Front widening");
-    const auto selected = Utilities::split_string_list(prm.get("Criteria"));
+    interval             = prm.get_integer("Refinement interval");
+    min_level            = prm.get_integer("Minimum level");
+    max_level            = prm.get_integer("Maximum level");
+    refine_fraction      = prm.get_double("Refine fraction");
+    coarsen_fraction     = prm.get_double("Coarsen fraction");
+    initial_refinements  = prm.get_integer("Initial contact refinements");
+    front_widening       = prm.get_double("Front widening");
+    coarsening_tolerance = prm.get_double("Coarsening tolerance");
+    const auto selected  = Utilities::split_string_list(prm.get("Criteria"));
     prm.leave_subsection();
     AssertThrow(min_level <= max_level,
                 ExcMessage("Mesh refinement/Minimum level (" +
@@ -436,6 +450,9 @@ namespace dyncontact
           if (cell->level() <= int(min_level))
             cell->clear_coarsen_flag();
         }
+    coarsening_limited = coarsening_tolerance > 0. ?
+                           limit_coarsening() :
+                           std::pair<unsigned int, double>(0, 0.);
   }
 
 
@@ -487,6 +504,7 @@ namespace dyncontact
     for (const std::string entry : {"Refinement interval",
                                     "Refine fraction",
                                     "Coarsen fraction",
+                                    "Coarsening tolerance",
                                     "Minimum level",
                                     "Front widening",
                                     "Criteria"})

@@ -16,10 +16,20 @@ namespace dyncontact
 
 
   void
+  MeshTransfer::add_coarsening(const unsigned int refused, const double removed)
+  {
+    coarsening_refused += refused;
+    coarsening_removed += removed;
+  }
+
+
+
+  void
   MeshTransfer::save(std::map<std::string, std::string> &state) const
   {
     std::ostringstream s;
-    s << std::setprecision(17) << energy_change << " " << penetration;
+    s << std::setprecision(17) << energy_change << " " << penetration << " "
+      << coarsening_refused << " " << coarsening_removed;
     state["mesh_transfer"] = s.str();
   }
 
@@ -33,5 +43,13 @@ namespace dyncontact
     s >> energy >> transfer_penetration;
     energy_change = std::stod(energy);
     penetration   = std::stod(transfer_penetration);
+    // (checkpoints written before the coarsening tolerance have two values)
+    unsigned int refused = 0;
+    double       removed = 0.;
+    if (s >> refused >> removed)
+      {
+        coarsening_refused = refused;
+        coarsening_removed = removed;
+      }
   }
 } // namespace dyncontact

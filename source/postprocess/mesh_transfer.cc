@@ -24,15 +24,23 @@ namespace dyncontact
       std::vector<std::string>
       columns() const override
       {
+        if (this->get_mesh_adaptor().get_coarsening_tolerance() > 0.)
+          return {"energy_transfer",
+                  "transfer_penetration",
+                  "coarsening_refused",
+                  "coarsening_removed"};
         return {"energy_transfer", "transfer_penetration"};
       }
 
       void
       execute(std::vector<double> &row) override
       {
-        row.insert(row.end(),
-                   {this->get_mesh_transfer().energy_change,
-                    this->get_mesh_transfer().penetration});
+        const auto &record = this->get_mesh_transfer();
+        row.insert(row.end(), {record.energy_change, record.penetration});
+        if (this->get_mesh_adaptor().get_coarsening_tolerance() > 0.)
+          row.insert(row.end(),
+                     {double(record.coarsening_refused),
+                      record.coarsening_removed});
       }
     };
 

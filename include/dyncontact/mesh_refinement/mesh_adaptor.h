@@ -89,6 +89,13 @@ namespace dyncontact
       return max_level;
     }
 
+    /// "Coarsening tolerance" (0: no limit).
+    double
+    get_coarsening_tolerance() const
+    {
+      return coarsening_tolerance;
+    }
+
     /// Before t = 0: refines the contact zone of @p problem's initial
     /// state "Initial contact refinements" times (fewer, with a warning,
     /// where no cell is flagged), setting the problem up on each mesh.
@@ -158,13 +165,24 @@ namespace dyncontact
     widening_distance() const;
 
   private:
-    unsigned int interval            = 0;
-    unsigned int min_level           = 0;
-    unsigned int max_level           = 10;
-    double       refine_fraction     = 0.2;
-    double       coarsen_fraction    = 0.3;
-    unsigned int initial_refinements = 0;
-    double       front_widening      = 0.;
+    /// Clears the coarsening flags of every family of cells whose
+    /// coarsening would remove more than its share of "Coarsening
+    /// tolerance" times the energy (the family's share of the bodies'
+    /// volume); returns the families refused and the energy the others
+    /// remove (J), over all ranks.
+    std::pair<unsigned int, double>
+    limit_coarsening() const;
+
+    unsigned int interval             = 0;
+    unsigned int min_level            = 0;
+    unsigned int max_level            = 10;
+    double       refine_fraction      = 0.2;
+    double       coarsen_fraction     = 0.3;
+    unsigned int initial_refinements  = 0;
+    double       front_widening       = 0.;
+    double       coarsening_tolerance = 0.;
+    /// limit_coarsening()'s result of the last marking
+    mutable std::pair<unsigned int, double> coarsening_limited;
     /// whether the warning of a widening beyond the mesh was printed
     mutable bool             widening_warned = false;
     std::vector<std::string> criterion_names;

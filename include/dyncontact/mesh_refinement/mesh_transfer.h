@@ -18,11 +18,21 @@ namespace dyncontact
     double energy_change = 0.;
     /// Largest penetration of K_h they left before the projection (m).
     double penetration = 0.;
+    /// Families of cells whose coarsening "Coarsening tolerance" refused.
+    unsigned int coarsening_refused = 0;
+    /// Energy of what the accepted coarsening removed (J), in the norm
+    /// 1/2 ||v||^2_{L2(rho)} + 1/2 a(u, u) of the difference.
+    double coarsening_removed = 0.;
 
     /// One transfer changed the energy by @p energy and left the
     /// penetration @p transfer_penetration.
     void
     add(const double energy, const double transfer_penetration);
+
+    /// One adaptation's coarsening: @p refused families refused, @p removed
+    /// J removed by the others.
+    void
+    add_coarsening(const unsigned int refused, const double removed);
 
     void
     save(std::map<std::string, std::string> &state) const;

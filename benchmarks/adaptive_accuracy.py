@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Accuracy of an adaptive run on an input nobody tuned, against the uniform
+mesh of its finest level: the Hertz drop run through impact, rebound and
+release (prm/hertz_drop_adaptive.prm with stiffer bodies, E = 100 Pa, dropped
+at 0.5 m/s without a load: contact from 0.024 s to about 0.67 s, flight to
+2 s, 500 steps of 0.004 s; the example's adaptive settings with Maximum
+level 4).
+
+tools/study.py runs the uniform meshes of levels 1 to 5 (h alone, the same
+tau) and the adaptive run (levels 1 to 4) as given and with each Mesh
+refinement/Coarsening tolerance of --tolerances, all compared with the
+uniform level-5 run. For each adaptive run the script prints, against the
+uniform level-4 run (study estimates of both errors: the difference from
+the level-5 run plus that run's own estimated error): the ratios of the
+contact-force error (largest over time / peak) and of the position error
+(the bodies' mean displacement, largest over time), the release time's
+difference in steps, and the ratio of the run times (wall time less the
+comparisons).
+
+Usage, from the repository's top folder after tools/setup.sh (about 10
+minutes on one core):
+    benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]"""
+import options
+import csv
+import os
+import subprocess
+import sys
+
+arguments = sys.argv[1:]
+tolerances = options.take_option(arguments, "--tolerances",
+                                 lambda v: [t for t in v.split(",") if t],
+                                 ["1e-3", "1e-4", "1e-5"])
+executable = os.path.abspath(arguments[0] if arguments else "build/dyncontact")
+top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+work = os.path.abspath("results-adaptive-accuracy")
+os.makedirs(work, exist_ok=True)
+prm = os.path.join(work, "hertz_long_drop.prm")
+with open(prm, "w") as f:
+    f.write("include %s\n" % os.path.join(top, "prm", "hertz_drop_adaptive.prm"))
+    f.write("""subsection Scene
+  subsection Hertz
+    set Drop velocity = 0.5
+    set Load          = 0
+    set Initial gap   = 0.01
+  end
+end
+subsection Mesh refinement
+  set Maximum level               = 4
+  set Initial contact refinements = 3
+end
+subsection Material
+  set Young's modulus        = 100
+  set Viscous shear modulus  = 0.1
+  set Viscous Lame parameter = 0.1
+end
+subsection Material of body 2
+  set Young's modulus = 100
+end
+subsection Time integration
+  set Time step = 0.004
+  set End time  = 2
+end
+""")
+command = [sys.executable, os.path.join(top, "tools", "study.py"), prm,
+           "--refine", "h", "--levels", "5", "--samples", "20",
+           "--out", os.path.join(work, "study"), "--executable", executable]
+for t in tolerances:
+    command += ["--adaptive-variant",
+                "tolerance %s:Mesh refinement/Coarsening tolerance=%s" % (t, t)]
+result = subprocess.run(command, capture_output=True, text=True)
+print(result.stdout)
+if result.returncode != 0:
+    sys.exit("adaptive_accuracy: the study failed:\n" + result.stderr)
+
+rows = list(csv.DictReader(open(os.path.join(work, "study", "study.csv"))))
+uniform = [r for r in rows if r["configuration"].startswith("uniform")
+           and int(r["mesh_level"]) == 4][0]
+tau = float(uniform["tau"])
+print("Against the uniform level-4 run (%s DoFs, %.3g s):" %
+      (uniform["dofs"], float(uniform["time"])))
+print("%-26s %8s %10s %10s %16s %10s" % ("configuration", "DoFs", "force",
+                                          "position", "release/steps",
+                                          "time"))
+for r in rows:
+    if not r["configuration"].startswith("adaptive") or r["level"] != "0":
+        continue
+    ratio = lambda key: float(r["estimated_" + key]) / float(uniform["estimated_" + key])
+    print("%-26s %8s %10.2f %10.2f %16.1f %10.2f" % (
+        r["configuration"], r["dofs"], ratio("force_max"),
+        ratio("position_max"), float(r["release"]) / tau,
+        float(r["time"]) / float(uniform["time"])))
+print("(ratios of the estimated errors, adaptive over uniform; release: "
+      "the difference from the level-5 run in steps; time: ratio of the "
+      "wall times less the comparisons)")
