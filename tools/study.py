@@ -147,6 +147,7 @@ defaults = subprocess.run([executable, "--help"], capture_output=True,
 defaults = [line for line in defaults
             if line.strip().startswith(("set ", "subsection ", "end"))]
 prm = read_prm(None, {}, lines=defaults)
+known_entries = set(prm)
 prm.update(read_prm(args.prm, {}))
 input_text = open(args.prm).read()
 
@@ -246,6 +247,19 @@ for variant in args.adaptive_variant:
     if not adaptive_input or args.no_adaptive:
         fail("--adaptive-variant needs an input that adapts its mesh (Mesh "
              "refinement/Refinement interval > 0) and no --no-adaptive")
+    for item in items:
+        # an entry of a subsection the program declares must be one of its
+        # entries (refused here, not after the other runs)
+        path = "/".join(p.strip() for p in item.split("=", 1)[0].split("/"))
+        parent = path.rsplit("/", 1)[0] if "/" in path else ""
+        if path not in known_entries and \
+                any(k.startswith(parent + "/") for k in known_entries):
+            fail("--adaptive-variant '%s': '%s' is no entry of the program "
+                 "(dyncontact --help lists them)" % (variant, path))
+        if path == "Mesh refinement/Refinement interval" and \
+                item.split("=", 1)[1].strip() == "0":
+            print("   warning: --adaptive-variant '%s' switches the "
+                  "adaptation off: its runs are uniform" % variant)
     configurations.append(("adaptive " + label.strip(), items))
 
 
@@ -333,6 +347,18 @@ for c, (label, items) in enumerate(configurations):
         plan.append((label, k, "%s-level%d" % (re.sub(r"[^A-Za-z0-9_.+-]", "",
                                                       label.replace(" ", "_")), k),
                      level + extra, mesh_level, tau))
+# distinct configurations must not share a folder (labels that differ
+# only in characters a folder name leaves out)
+folders = {}
+for label, k, name, *_ in plan:
+    if name in folders and folders[name] != label:
+        fail("the configurations '%s' and '%s' would share the run folder "
+             "'%s': give --adaptive-variant labels that differ in letters or "
+             "digits" % (folders[name], label, name))
+    folders[name] = label
+if len(set(c[0] for c in configurations)) != len(configurations):
+    fail("two configurations have the same label: give every "
+         "--adaptive-variant its own label")
 reference_name = "reference-level%d" % finest
 print("study of %s: %d levels (%s), %d configuration(s), in %s" %
       (args.prm, N, args.refine, len(configurations), out), flush=True)

@@ -86,9 +86,13 @@ namespace dyncontact
       "removes (u and u_dot interpolated to the parent and prolongated "
       "back; its energy 1/2 ||v||^2_L2(rho) + 1/2 a(u, u)) is at most this "
       "value times the energy times the family's share of the bodies' "
-      "volume, so that one adaptation removes at most this share of the "
-      "energy. Dimensionless, 0 to 1; 0: no limit. Statistics columns "
-      "coarsening_refused (families) and coarsening_removed (J) when > 0.");
+      "volume, so that the energy of all that one adaptation's coarsening "
+      "removes is at most this share of the energy (the energy itself may "
+      "change by up to about 2 sqrt(value) times it, through the removed "
+      "part's cross term with the rest: statistics column "
+      "energy_transfer). Dimensionless, 0 to 1; 0: no limit. Statistics "
+      "columns coarsening_refused (families) and coarsening_removed (J, the "
+      "removed part's energy) when > 0.");
     std::string documentation;
     for (const auto &info :
          PluginRegistry<MeshRefinement::Interface>::plugins())
