@@ -7,6 +7,9 @@
 #include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/postprocess/interface.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace dyncontact
 {
   namespace Postprocess
@@ -30,6 +33,30 @@ namespace dyncontact
                   "coarsening_refused",
                   "coarsening_removed"};
         return {"energy_transfer", "transfer_penetration"};
+      }
+
+      /// With a Coarsening tolerance: the families it kept and the energy
+      /// of what the accepted coarsening removed, over the run.
+      std::string
+      summary(const Statistics &s, const SummaryInput &) const override
+      {
+        const double tolerance =
+          this->get_mesh_adaptor().get_coarsening_tolerance();
+        if (tolerance == 0. || !s.has_column("coarsening_refused"))
+          return "";
+        double refused = 0., removed = 0.;
+        for (const double r : s.column("coarsening_refused"))
+          refused += r;
+        for (const double r : s.column("coarsening_removed"))
+          removed += r;
+        std::ostringstream out;
+        out << std::setprecision(6) << "coarsening: " << refused
+            << " families kept by Mesh refinement/Coarsening tolerance = "
+            << tolerance
+            << " (their coarsening would have removed more than their "
+               "share); the parts removed by the others: "
+            << removed << " J in all\n";
+        return out.str();
       }
 
       void
