@@ -5,6 +5,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <dyncontact/discretization/energy_density.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/scenes/interface.h>
@@ -44,11 +45,7 @@ namespace dyncontact
       double          e = 0., volume = 0.;
       for (unsigned int q = 0; q < quadrature.size(); ++q)
         {
-          const SymmetricTensor<2, dim> eps = symmetrize(g[q]);
-          e += (0.5 * material.density * (w[q] * w[q]) +
-                0.5 * (2. * material.mu() * (eps * eps) +
-                       material.lambda() * trace(eps) * trace(eps))) *
-               values.JxW(q);
+          e += energy_density(material, w[q], g[q]) * values.JxW(q);
           volume += values.JxW(q);
         }
       return std::make_pair(e, volume);

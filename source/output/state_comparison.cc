@@ -10,6 +10,7 @@
 #include <dyncontact/base/checksum.h>
 #include <dyncontact/base/collective_errors.h>
 #include <dyncontact/base/triangulation.h>
+#include <dyncontact/discretization/energy_density.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/discretization/serial_transfer.h>
 #include <dyncontact/output/state_comparison.h>
@@ -347,14 +348,10 @@ namespace dyncontact
         make_array_view(u_ref), g1);
       const Material &material = scene.material(cell->material_id());
       for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          const Tensor<1, dim>          edot = v1[q] - v2[q];
-          const SymmetricTensor<2, dim> eps  = symmetrize(g1[q] - g2[q]);
-          local += (0.5 * material.density * (edot * edot) +
-                    0.5 * (2. * material.mu() * (eps * eps) +
-                           material.lambda() * trace(eps) * trace(eps))) *
-                   values_ref.JxW(q);
-        }
+        local += energy_density(material,
+                                Tensor<1, dim>(v1[q] - v2[q]),
+                                g1[q] - g2[q]) *
+                 values_ref.JxW(q);
     };
 
     if (Utilities::MPI::n_mpi_processes(comm) == 1)

@@ -5,6 +5,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <dyncontact/discretization/energy_density.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
@@ -136,13 +137,11 @@ namespace dyncontact
                 {
                   const ExactValues<dim> exact =
                     scene.exact_solution(fe_values.quadrature_point(q), time);
-                  const Tensor<1, dim>          edot = exact.velocity - vh[q];
-                  const SymmetricTensor<2, dim> eps =
-                    symmetrize(exact.displacement_gradient - grad_uh[q]);
+                  const Tensor<1, dim> edot = exact.velocity - vh[q];
                   local +=
-                    (0.5 * material.density * (edot * edot) +
-                     0.5 * (2. * material.mu() * (eps * eps) +
-                            material.lambda() * trace(eps) * trace(eps))) *
+                    energy_density(material,
+                                   edot,
+                                   exact.displacement_gradient - grad_uh[q]) *
                     fe_values.JxW(q);
                 }
             }
