@@ -8,18 +8,21 @@ level 4).
 
 tools/study.py runs the uniform meshes of levels 1 to 5 (h alone, the same
 tau) and the adaptive run (levels 1 to 4) as given and with each Mesh
-refinement/Coarsening tolerance of --tolerances, all compared with the
-uniform level-5 run. For each adaptive run the script prints, against the
-uniform level-4 run (study estimates of both errors: the difference from
-the level-5 run plus that run's own estimated error): the ratios of the
-contact-force error (largest over time / peak) and of the position error
+refinement/Coarsening tolerance of --tolerances and, marked by a tolerance
+instead of the fractions, with each Mesh refinement/Error tolerance of
+--error-tolerances, all compared with the uniform level-5 run. For each
+adaptive run the script prints, against the uniform level-4 run (study
+estimates of both errors: the difference from the level-5 run plus that
+run's own estimated error): the ratios of the energy-norm error (largest
+over time), of the contact-force error (largest over time / peak) and of the position error
 (the bodies' mean displacement, largest over time), the release time's
 difference in steps, and the ratio of the run times (wall time less the
 comparisons).
 
-Usage, from the repository's top folder after tools/setup.sh (about 10
+Usage, from the repository's top folder after tools/setup.sh (about 15
 minutes on one core):
-    benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]"""
+    benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]
+        [--error-tolerances 0.4,0.2,0.1]"""
 import options
 import csv
 import os
@@ -30,6 +33,9 @@ arguments = sys.argv[1:]
 tolerances = options.take_option(arguments, "--tolerances",
                                  lambda v: [t for t in v.split(",") if t],
                                  ["1e-3", "1e-4", "1e-5"])
+error_tolerances = options.take_option(arguments, "--error-tolerances",
+                                       lambda v: [t for t in v.split(",") if t],
+                                       ["0.4", "0.2", "0.1"])
 executable = os.path.abspath(arguments[0] if arguments else "build/dyncontact")
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 work = os.path.abspath("results-adaptive-accuracy")
@@ -67,6 +73,9 @@ command = [sys.executable, os.path.join(top, "tools", "study.py"), prm,
 for t in tolerances:
     command += ["--adaptive-variant",
                 "tolerance %s:Mesh refinement/Coarsening tolerance=%s" % (t, t)]
+for t in error_tolerances:
+    command += ["--adaptive-variant",
+                "delta %s:Mesh refinement/Error tolerance=%s" % (t, t)]
 result = subprocess.run(command, capture_output=True, text=True)
 print(result.stdout)
 if result.returncode != 0:
@@ -78,15 +87,15 @@ uniform = [r for r in rows if r["configuration"].startswith("uniform")
 tau = float(uniform["tau"])
 print("Against the uniform level-4 run (%s DoFs, %.3g s):" %
       (uniform["dofs"], float(uniform["time"])))
-print("%-26s %8s %10s %10s %16s %10s" % ("configuration", "DoFs", "force",
-                                          "position", "release/steps",
-                                          "time"))
+print("%-26s %8s %10s %10s %10s %16s %10s" % (
+    "configuration", "DoFs", "energy", "force", "position", "release/steps",
+    "time"))
 for r in rows:
     if not r["configuration"].startswith("adaptive") or r["level"] != "0":
         continue
     ratio = lambda key: float(r["estimated_" + key]) / float(uniform["estimated_" + key])
-    print("%-26s %8s %10.2f %10.2f %16.1f %10.2f" % (
-        r["configuration"], r["dofs"], ratio("force_max"),
+    print("%-26s %8s %10.2f %10.2f %10.2f %16.1f %10.2f" % (
+        r["configuration"], r["dofs"], ratio("energy_max"), ratio("force_max"),
         ratio("position_max"), float(r["release"]) / tau,
         float(r["time"]) / float(uniform["time"])))
 print("(ratios of the estimated errors, adaptive over uniform; release: "

@@ -12,6 +12,83 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// The integration of the energy density over cells: values.reinit(cell)
+    /// first, then of(cell, cu, cv) gives the energy of the local values
+    /// @p cu (displacement) and @p cv (velocity) on the cell and its volume.
+    template <int dim>
+    class CellEnergy
+    {
+    public:
+      CellEnergy(const SimulatorAccess<dim> &access)
+        : scene(access.get_scene())
+        , quadrature(access.get_system().get_fe().degree + 1)
+        , values(access.get_mapping(),
+                 access.get_system().get_fe(),
+                 quadrature,
+                 update_values | update_gradients | update_JxW_values)
+        , w(quadrature.size())
+        , g(quadrature.size())
+      {}
+
+      template <typename Cell>
+      std::pair<double, double>
+      of(const Cell &cell, const Vector<double> &cu, const Vector<double> &cv)
+      {
+        values[displacement].get_function_values_from_local_dof_values(
+          make_array_view(const_cast<Vector<double> &>(cv)), w);
+        values[displacement].get_function_gradients_from_local_dof_values(
+          make_array_view(const_cast<Vector<double> &>(cu)), g);
+        const Material &material = scene.material(cell->material_id());
+        double          e = 0., volume = 0.;
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            e += energy_density(material, w[q], g[q]) * values.JxW(q);
+            volume += values.JxW(q);
+          }
+        return {e, volume};
+      }
+
+      const Scene<dim>                &scene;
+      const QGauss<dim>                quadrature;
+      const FEValuesExtractors::Vector displacement{0};
+      FEValues<dim>                    values;
+      std::vector<Tensor<1, dim>>      w;
+      std::vector<Tensor<2, dim>>      g;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  MeshAdaptor<dim>::energy_and_volume() const
+  {
+    const SemiDiscreteSystem<dim> &system = this->get_system();
+    const auto                     u = system.ghosted(this->get_solution()),
+               v                     = system.ghosted(this->get_velocity());
+    CellEnergy<dim>    energy(*this);
+    const unsigned int n = system.get_fe().n_dofs_per_cell();
+    Vector<double>     cu(n), cv(n);
+    double             total = 0., volume = 0.;
+    for (const auto &cell : system.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          energy.values.reinit(cell);
+          cell->get_dof_values(u, cu);
+          cell->get_dof_values(v, cv);
+          const auto [e, vol] = energy.of(cell, cu, cv);
+          total += e;
+          volume += vol;
+        }
+    const MPI_Comm comm = this->get_mpi_communicator();
+    return {Utilities::MPI::sum(total, comm),
+            Utilities::MPI::sum(volume, comm)};
+  }
+
+
+
   template <int dim>
   std::pair<unsigned int, double>
   MeshAdaptor<dim>::limit_coarsening() const
@@ -19,54 +96,14 @@ namespace dyncontact
     const SemiDiscreteSystem<dim> &system = this->get_system();
     const DoFHandler<dim>         &dofs   = system.get_dof_handler();
     const FiniteElement<dim>      &fe     = system.get_fe();
-    const Scene<dim>              &scene  = this->get_scene();
     const MPI_Comm                 comm   = this->get_mpi_communicator();
     const auto                     u = system.ghosted(this->get_solution()),
                v                     = system.ghosted(this->get_velocity());
-
-    const QGauss<dim>                quadrature(fe.degree + 1);
-    const FEValuesExtractors::Vector displacement(0);
-    FEValues<dim>                    values(this->get_mapping(),
-                         fe,
-                         quadrature,
-                         update_values | update_gradients | update_JxW_values);
-    std::vector<Tensor<1, dim>>      w(quadrature.size());
-    std::vector<Tensor<2, dim>>      g(quadrature.size());
-    // 1/2 rho |v|^2 + 1/2 sigma(u) : eps(u) on the cell values is reinit on,
-    // of the local values @p cu, @p cv; and the cell's volume
-    const auto energy = [&](const auto           &cell,
-                            const Vector<double> &cu,
-                            const Vector<double> &cv) {
-      values[displacement].get_function_values_from_local_dof_values(
-        make_array_view(const_cast<Vector<double> &>(cv)), w);
-      values[displacement].get_function_gradients_from_local_dof_values(
-        make_array_view(const_cast<Vector<double> &>(cu)), g);
-      const Material &material = scene.material(cell->material_id());
-      double          e = 0., volume = 0.;
-      for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          e += energy_density(material, w[q], g[q]) * values.JxW(q);
-          volume += values.JxW(q);
-        }
-      return std::make_pair(e, volume);
-    };
-
-    // the energy and volume of the bodies
+    const double tolerance           = get_coarsening_tolerance();
+    const auto [total, volume]       = energy_and_volume();
+    CellEnergy<dim>    energy(*this);
     const unsigned int n = fe.n_dofs_per_cell();
     Vector<double>     cu(n), cv(n), pu(n), pv(n), tmp(n);
-    double             total = 0., volume = 0.;
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          values.reinit(cell);
-          cell->get_dof_values(u, cu);
-          cell->get_dof_values(v, cv);
-          const auto [e, vol] = energy(cell, cu, cv);
-          total += e;
-          volume += vol;
-        }
-    total  = Utilities::MPI::sum(total, comm);
-    volume = Utilities::MPI::sum(volume, comm);
 
     // each family flagged as a whole: what its parent's values, prolongated
     // back, miss on each child
@@ -98,12 +135,12 @@ namespace dyncontact
               cu -= tmp;
               prolongation.vmult(tmp, pv);
               cv -= tmp;
-              values.reinit(child);
-              const auto [e, vol] = energy(child, cu, cv);
+              energy.values.reinit(child);
+              const auto [e, vol] = energy.of(child, cu, cv);
               removed += e;
               family_volume += vol;
             }
-          if (removed > coarsening_tolerance * total * family_volume / volume)
+          if (removed > tolerance * total * family_volume / volume)
             {
               for (unsigned int c = 0; c < parent->n_children(); ++c)
                 parent->child(c)->clear_coarsen_flag();
@@ -116,6 +153,10 @@ namespace dyncontact
             Utilities::MPI::sum(lost, comm)};
   }
 
+  template std::pair<double, double>
+  MeshAdaptor<2>::energy_and_volume() const;
+  template std::pair<double, double>
+  MeshAdaptor<3>::energy_and_volume() const;
   template std::pair<unsigned int, double>
   MeshAdaptor<2>::limit_coarsening() const;
   template std::pair<unsigned int, double>

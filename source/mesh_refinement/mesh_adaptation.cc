@@ -62,6 +62,8 @@ namespace dyncontact
       timer);
     record.add(adaptation.energy_change, adaptation.penetration);
     record.add_coarsening(coarsening_limited.first, coarsening_limited.second);
+    if (error_tolerance > 0.)
+      record.add_estimate(tolerance_marked.first, tolerance_marked.second);
     return adaptation.changed;
   }
 

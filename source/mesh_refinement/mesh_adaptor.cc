@@ -93,6 +93,24 @@ namespace dyncontact
       "energy_transfer). Dimensionless, 0 to 1; 0: no limit. Statistics "
       "columns coarsening_refused (families) and coarsening_removed (J, the "
       "removed part's energy) when > 0.");
+    prm.declare_entry(
+      "Error tolerance",
+      "0",
+      Patterns::Double(0., 1.),
+      "Marking by a tolerance delta instead of the fractions: the "
+      "estimated error of each cell K, eta_K = 1/2 rho h_K^2 k_K(u_dot)^2 + "
+      "1/2 (lambda + 2 mu) k_K(u)^2 (J; k_K: Zienkiewicz and Zhu's indicator, the "
+      "estimate of the gradient's error on K), is compared with its share "
+      "delta^2 E |K| / |bodies| of the tolerance (E: the kinetic and "
+      "elastic energy, J): a cell above it is refined, every other one is "
+      "coarsened where the coarsening limit allows (Coarsening tolerance, "
+      "or delta^2 / 4 without one), so that the estimated error in the "
+      "energy norm, relative to sqrt(E), stays about delta. Refine fraction, "
+      "Coarsen fraction and the indicators of Criteria are then not used "
+      "(the contact zone's flags are). Dimensionless, 0 to 1; 0: the "
+      "fractions. Statistics columns estimated_error (sqrt(sum eta_K / "
+      "E)) and cells_above_tolerance (cells at Maximum level above their "
+      "share) when > 0.");
     std::string documentation;
     for (const auto &info :
          PluginRegistry<MeshRefinement::Interface>::plugins())
@@ -129,6 +147,7 @@ namespace dyncontact
     initial_refinements  = prm.get_integer("Initial contact refinements");
     front_widening       = prm.get_double("Front widening");
     coarsening_tolerance = prm.get_double("Coarsening tolerance");
+    error_tolerance      = prm.get_double("Error tolerance");
     const auto selected  = Utilities::split_string_list(prm.get("Criteria"));
     prm.leave_subsection();
     AssertThrow(min_level <= max_level,
@@ -401,12 +420,16 @@ namespace dyncontact
   void
   MeshAdaptor<dim>::mark_cells(Triangulation<dim> &triangulation) const
   {
-    // indicators of all criteria, each scaled to maximum 1, added
+    // indicators of all criteria, each scaled to maximum 1, added (not
+    // with a tolerance)
     Vector<float> indicators(triangulation.n_active_cells());
-    for (const auto &criterion : criteria)
-      criterion->execute(indicators);
-    if (Utilities::MPI::max(double(indicators.linfty_norm()),
-                            this->get_mpi_communicator()) > 0.)
+    if (error_tolerance == 0.)
+      for (const auto &criterion : criteria)
+        criterion->execute(indicators);
+    if (error_tolerance > 0.)
+      tolerance_marked = mark_by_tolerance(triangulation);
+    else if (Utilities::MPI::max(double(indicators.linfty_norm()),
+                                 this->get_mpi_communicator()) > 0.)
       {
         refine_and_coarsen_fixed_number(triangulation,
                                         indicators,
@@ -454,7 +477,7 @@ namespace dyncontact
           if (cell->level() <= int(min_level))
             cell->clear_coarsen_flag();
         }
-    coarsening_limited = coarsening_tolerance > 0. ?
+    coarsening_limited = get_coarsening_tolerance() > 0. ?
                            limit_coarsening() :
                            std::pair<unsigned int, double>(0, 0.);
   }
@@ -503,12 +526,19 @@ namespace dyncontact
                               "no criterion of Mesh refinement/Criteria is "
                               "the contact zone, and Initial contact "
                               "refinements = 0");
+        if (error_tolerance > 0.)
+          for (const std::string entry :
+               {"Refine fraction", "Coarsen fraction"})
+            unread.emplace_back("Mesh refinement/" + entry,
+                                "the cells are marked by Mesh "
+                                "refinement/Error tolerance");
         return unread;
       }
     for (const std::string entry : {"Refinement interval",
                                     "Refine fraction",
                                     "Coarsen fraction",
                                     "Coarsening tolerance",
+                                    "Error tolerance",
                                     "Minimum level",
                                     "Front widening",
                                     "Criteria"})
@@ -535,8 +565,11 @@ namespace dyncontact
              << ")";
         return text.str();
       }
-    text << "Mesh refinement/Maximum level (now " << max_level
-         << "), Refine fraction (now " << refine_fraction << ")";
+    text << "Mesh refinement/Maximum level (now " << max_level << "), ";
+    if (error_tolerance > 0.)
+      text << "raise Error tolerance (now " << error_tolerance << ")";
+    else
+      text << "Refine fraction (now " << refine_fraction << ")";
     if (front_widening > 0.)
       text << ", Front widening (now " << front_widening << ")";
     text << ", or raise Refinement interval (now " << interval << ")";

@@ -25,11 +25,21 @@ namespace dyncontact
 
 
   void
+  MeshTransfer::add_estimate(const double estimate, const unsigned int above)
+  {
+    estimated_error       = std::max(estimated_error, estimate);
+    cells_above_tolerance = std::max(cells_above_tolerance, above);
+  }
+
+
+
+  void
   MeshTransfer::save(std::map<std::string, std::string> &state) const
   {
     std::ostringstream s;
     s << std::setprecision(17) << energy_change << " " << penetration << " "
-      << coarsening_refused << " " << coarsening_removed;
+      << coarsening_refused << " " << coarsening_removed << " "
+      << estimated_error << " " << cells_above_tolerance;
     state["mesh_transfer"] = s.str();
   }
 
@@ -50,6 +60,14 @@ namespace dyncontact
       {
         coarsening_refused = refused;
         coarsening_removed = removed;
+      }
+    // (and those written before the error tolerance four)
+    double       estimate = 0.;
+    unsigned int above    = 0;
+    if (s >> estimate >> above)
+      {
+        estimated_error       = estimate;
+        cells_above_tolerance = above;
       }
   }
 } // namespace dyncontact

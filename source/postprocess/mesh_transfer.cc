@@ -7,6 +7,7 @@
 #include <dyncontact/mesh_refinement/mesh_transfer.h>
 #include <dyncontact/postprocess/interface.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -27,35 +28,73 @@ namespace dyncontact
       std::vector<std::string>
       columns() const override
       {
-        if (this->get_mesh_adaptor().get_coarsening_tolerance() > 0.)
-          return {"energy_transfer",
-                  "transfer_penetration",
-                  "coarsening_refused",
-                  "coarsening_removed"};
-        return {"energy_transfer", "transfer_penetration"};
+        const auto              &adaptor = this->get_mesh_adaptor();
+        std::vector<std::string> names{"energy_transfer",
+                                       "transfer_penetration"};
+        if (adaptor.get_coarsening_tolerance() > 0.)
+          names.insert(names.end(),
+                       {"coarsening_refused", "coarsening_removed"});
+        if (adaptor.get_error_tolerance() > 0.)
+          names.insert(names.end(),
+                       {"estimated_error", "cells_above_tolerance"});
+        return names;
       }
 
-      /// With a Coarsening tolerance: the families it kept and the energy
-      /// of what the accepted coarsening removed, over the run.
+      /// With a coarsening limit: the families it kept and the energy of
+      /// what the accepted coarsening removed, over the run; with an Error
+      /// tolerance: the largest estimate, and whether cells at Maximum level
+      /// stayed above their share.
       std::string
       summary(const Statistics &s, const SummaryInput &) const override
       {
-        const double tolerance =
-          this->get_mesh_adaptor().get_coarsening_tolerance();
-        if (tolerance == 0. || !s.has_column("coarsening_refused"))
-          return "";
-        double refused = 0., removed = 0.;
-        for (const double r : s.column("coarsening_refused"))
-          refused += r;
-        for (const double r : s.column("coarsening_removed"))
-          removed += r;
+        const auto        &adaptor   = this->get_mesh_adaptor();
+        const double       tolerance = adaptor.get_coarsening_tolerance();
+        const double       delta     = adaptor.get_error_tolerance();
         std::ostringstream out;
-        out << std::setprecision(6) << "coarsening: " << refused
-            << " families kept by Mesh refinement/Coarsening tolerance = "
-            << tolerance
-            << " (their coarsening would have removed more than their "
-               "share); the parts removed by the others: "
-            << removed << " J in all\n";
+        out << std::setprecision(6);
+        if (tolerance > 0. && s.has_column("coarsening_refused"))
+          {
+            double refused = 0., removed = 0.;
+            for (const double r : s.column("coarsening_refused"))
+              refused += r;
+            for (const double r : s.column("coarsening_removed"))
+              removed += r;
+            out << "coarsening: " << refused << " families kept by Mesh "
+                << "refinement/"
+                << (delta > 0. && tolerance == 0.25 * delta * delta ?
+                      "Error tolerance (the coarsening limit delta^2/4 = " :
+                      "Coarsening tolerance = ")
+                << tolerance
+                << (delta > 0. && tolerance == 0.25 * delta * delta ? ")" : "")
+                << " (their coarsening would have removed more than their "
+                   "share); the parts removed by the others: "
+                << removed << " J in all\n";
+          }
+        if (delta > 0. && s.has_column("estimated_error"))
+          {
+            double       estimate = 0., above = 0.;
+            unsigned int rows_above = 0;
+            for (const double e : s.column("estimated_error"))
+              estimate = std::max(estimate, e);
+            for (const double a : s.column("cells_above_tolerance"))
+              {
+                above = std::max(above, a);
+                rows_above += (a > 0.);
+              }
+            out << "error tolerance: Mesh refinement/Error tolerance = "
+                << delta
+                << "; the estimated error (energy norm relative to sqrt(E), "
+                   "at the adaptations) at most "
+                << estimate
+                << (estimate > delta ? " (above the tolerance)" : "");
+            if (rows_above > 0)
+              out << "; not kept everywhere: up to " << above
+                  << " cells at Mesh refinement/Maximum level = "
+                  << adaptor.get_max_level()
+                  << " were above their share of it (in " << rows_above
+                  << " statistics rows): raise Maximum level or the tolerance";
+            out << "\n";
+          }
         return out.str();
       }
 
@@ -68,6 +107,10 @@ namespace dyncontact
           row.insert(row.end(),
                      {double(record.coarsening_refused),
                       record.coarsening_removed});
+        if (this->get_mesh_adaptor().get_error_tolerance() > 0.)
+          row.insert(row.end(),
+                     {record.estimated_error,
+                      double(record.cells_above_tolerance)});
       }
     };
 

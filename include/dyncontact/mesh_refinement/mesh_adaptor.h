@@ -26,6 +26,9 @@ namespace dyncontact
    * the chosen criteria (plugins: the indicators of all criteria are added,
    * the top fraction refined and the bottom fraction coarsened, then each
    * criterion flags the cells it insists on), within the level bounds.
+   * With an "Error tolerance" delta > 0 the cells are marked by their
+   * estimated errors against their shares of delta^2 E instead of the
+   * fractions (mark_by_tolerance()).
    * With "Front widening" w > 0, every cell of level l within w c tau n
    * max(1, Maximum level - l) of a cell the indicators refine (c the
    * fastest wave speed of the bodies, n the interval) is refined too and
@@ -89,11 +92,22 @@ namespace dyncontact
       return max_level;
     }
 
-    /// "Coarsening tolerance" (0: no limit).
+    /// The limit on what one adaptation's coarsening removes, as a share
+    /// of the energy: "Coarsening tolerance", or without it, with an "Error
+    /// tolerance" delta, delta^2 / 4 (0: no limit).
     double
     get_coarsening_tolerance() const
     {
-      return coarsening_tolerance;
+      return coarsening_tolerance > 0. ?
+               coarsening_tolerance :
+               0.25 * error_tolerance * error_tolerance;
+    }
+
+    /// "Error tolerance" (0: the cells are marked by the fractions).
+    double
+    get_error_tolerance() const
+    {
+      return error_tolerance;
     }
 
     /// Before t = 0: refines the contact zone of @p problem's initial
@@ -165,13 +179,26 @@ namespace dyncontact
     widening_distance() const;
 
   private:
+    /// The kinetic and elastic energy of the state (J) and the bodies'
+    /// volume, over all ranks.
+    std::pair<double, double>
+    energy_and_volume() const;
+
     /// Clears the coarsening flags of every family of cells whose
-    /// coarsening would remove more than its share of "Coarsening
-    /// tolerance" times the energy (the family's share of the bodies'
-    /// volume); returns the families refused and the energy the others
+    /// coarsening would remove more than its share of
+    /// get_coarsening_tolerance() times the energy (the family's share of the
+    /// bodies' volume); returns the families refused and the energy the others
     /// remove (J), over all ranks.
     std::pair<unsigned int, double>
     limit_coarsening() const;
+
+    /// With an "Error tolerance" delta: flags for refinement the cells whose
+    /// estimated error eta_K (J) exceeds delta^2 E |K| / |bodies|, and every
+    /// other cell for coarsening (limit_coarsening() decides which
+    /// families are). Returns the estimated relative error sqrt(sum eta_K /
+    /// E) and the cells above their share at Maximum level, over all ranks.
+    std::pair<double, unsigned int>
+    mark_by_tolerance(Triangulation<dim> &triangulation) const;
 
     unsigned int interval             = 0;
     unsigned int min_level            = 0;
@@ -181,8 +208,11 @@ namespace dyncontact
     unsigned int initial_refinements  = 0;
     double       front_widening       = 0.;
     double       coarsening_tolerance = 0.;
+    double       error_tolerance      = 0.;
     /// limit_coarsening()'s result of the last marking
     mutable std::pair<unsigned int, double> coarsening_limited;
+    /// mark_by_tolerance()'s result of the last marking
+    mutable std::pair<double, unsigned int> tolerance_marked;
     /// whether the warning of a widening beyond the mesh was printed
     mutable bool             widening_warned = false;
     std::vector<std::string> criterion_names;

@@ -23,6 +23,12 @@ namespace dyncontact
     /// Energy of what the accepted coarsening removed (J), in the norm
     /// 1/2 ||v||^2_{L2(rho)} + 1/2 a(u, u) of the difference.
     double coarsening_removed = 0.;
+    /// With an "Error tolerance": the largest estimated relative error
+    /// sqrt(sum eta_K / E) at an adaptation.
+    double estimated_error = 0.;
+    /// With an "Error tolerance": the most cells at Maximum level whose
+    /// estimated error exceeded their share at an adaptation.
+    unsigned int cells_above_tolerance = 0;
 
     /// One transfer changed the energy by @p energy and left the
     /// penetration @p transfer_penetration.
@@ -33,6 +39,11 @@ namespace dyncontact
     /// J removed by the others.
     void
     add_coarsening(const unsigned int refused, const double removed);
+
+    /// One adaptation marked by the tolerance: the estimated relative error
+    /// @p estimate, @p above cells above their share at Maximum level.
+    void
+    add_estimate(const double estimate, const unsigned int above);
 
     void
     save(std::map<std::string, std::string> &state) const;

@@ -1,0 +1,97 @@
+// Mesh refinement/Error tolerance on the 2D bar impact (10 cells along at
+// level 0, N-CS++, tau = 0.01 s, to 2.5 s; exact solution). Checked:
+// - the estimate (statistics column estimated_error, the energy norm of
+//   the error relative to sqrt(E) by Zienkiewicz and Zhu's indicators) on
+//   fixed meshes of 10, 20 and 40 cells (Maximum level 0, tau with h): it
+//   falls by at least 1.25 per halving of h, and lies between 0.3 and 1
+//   times the exact error (it sees the local error, not the dispersion
+//   that the front leaves behind: measured 0.68, 0.54, 0.43 of it);
+// - the marking (levels 0 to 3, every 2 steps): with delta = 0.1 the run
+//   has more DoFs and an exact error (largest over time) at least 20 %
+//   below that with delta = 0.4; no adaptation's coarsening removes more
+//   than delta^2 / 4 of the energy (the limit the tolerance implies);
+//   summary.txt says that the tolerance was not kept everywhere exactly
+//   when cells at Maximum level stayed above their share (column
+//   cells_above_tolerance).
+// Also on 2 ranks (error_tolerance.mpirun=2).
+
+#include <cmath>
+
+#include "tests.h"
+
+int
+main(int argc, char **argv)
+{
+  dyncontact::MPIInitFinalize mpi(argc, argv);
+  using namespace testing;
+
+  const double energy = 0.05; // J/m: the bar's kinetic energy, conserved
+
+  // the estimate on fixed meshes
+  double previous = 0.;
+  for (const unsigned int cells : {10u, 20u, 40u})
+    {
+      std::ostringstream s;
+      s << "subsection Mesh refinement\n  set Refinement interval = 2\n"
+        << "  set Maximum level = 0\n  set Criteria = contact zone\n"
+        << "  set Error tolerance = 0.01\nend\n";
+      const Statistics stats =
+        run(bar_prm(2, "N-CS++", cells, 0.1 / cells, 2.5, s.str()));
+      double estimate = 0., exact = 0.;
+      for (const double e : stats.column("estimated_error"))
+        estimate = std::max(estimate, e);
+      exact = max_of(stats.column("error_energy_norm")) / std::sqrt(energy);
+      log() << cells << " cells: estimate between 0.3 and 1 times the exact "
+            << "error (largest over time): "
+            << check(estimate >= 0.3 * exact && estimate <= exact);
+      if (previous > 0.)
+        log() << "; 1.25 times below the coarser mesh's: "
+              << check(estimate * 1.25 <= previous);
+      log() << "\n";
+      previous = estimate;
+    }
+
+  // the marking
+  double loose_error = 0., loose_dofs = 0.;
+  for (const double delta : {0.4, 0.1})
+    {
+      std::ostringstream s;
+      s << "subsection Mesh refinement\n  set Refinement interval = 2\n"
+        << "  set Maximum level = 3\n  set Criteria = contact zone\n"
+        << "  set Error tolerance = " << delta << "\nend\n";
+      const Statistics stats =
+        run(bar_prm(2, "N-CS++", 10, 0.01, 2.5, s.str()));
+      const double error =
+        max_of(stats.column("error_energy_norm")) / std::sqrt(energy);
+      double dofs = 0., removed = 0., above = 0.;
+      for (const double d : stats.column("dofs"))
+        dofs += d / stats.column("dofs").size();
+      for (const double r : stats.column("coarsening_removed"))
+        removed = std::max(removed, r);
+      for (const double a : stats.column("cells_above_tolerance"))
+        above = std::max(above, a);
+      log() << "Error tolerance = " << delta << ":\n"
+            << "   no adaptation's coarsening removes more than delta^2/4 of "
+               "the energy: "
+            << check(removed <= 0.25 * delta * delta * energy * (1. + 1e-6))
+            << "\n";
+      const std::string summary = read("output-N-CS++-10/summary.txt");
+      log() << "   summary.txt gives the tolerance, and says it was not kept "
+               "everywhere exactly when cells at Maximum level stayed above "
+               "their share: "
+            << check(summary.find("error tolerance: Mesh refinement/Error "
+                                  "tolerance = ") != std::string::npos &&
+                     (summary.find("not kept everywhere") !=
+                      std::string::npos) == (above > 0.))
+            << "\n";
+      if (delta == 0.4)
+        {
+          loose_error = error;
+          loose_dofs  = dofs;
+          continue;
+        }
+      log() << "   more DoFs than with 0.4: " << check(dofs > loose_dofs)
+            << "; exact error (largest over time) at least 20 % below: "
+            << check(error <= 0.8 * loose_error) << "\n";
+    }
+}
