@@ -99,7 +99,7 @@ namespace dyncontact
       Patterns::Double(0., 1.),
       "Marking by a tolerance delta instead of the fractions: the "
       "estimated error of each cell K, eta_K = 1/2 rho h_K^2 k_K(u_dot)^2 + "
-      "1/2 (lambda + 2 mu) k_K(u)^2 (J; k_K: Zienkiewicz and Zhu's indicator, the "
+      "1/2 (lambda + 2 mu) k_K(u)^2 (J; the criterion energy error; k_K: Zienkiewicz and Zhu's indicator, the "
       "estimate of the gradient's error on K), is compared with its share "
       "delta^2 E |K| / |bodies| of the tolerance (E: the kinetic and "
       "elastic energy, J): a cell above it is refined, every other one is "

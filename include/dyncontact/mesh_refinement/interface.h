@@ -60,6 +60,17 @@ namespace dyncontact
                const MPI_Comm       comm);
 
 
+    /// The energy of the error on each of this rank's cells K (J, J/m in
+    /// 2D), 1/2 rho h_K^2 k_K(u_dot)^2 + 1/2 (lambda + 2 mu) k_K(u)^2, with
+    /// k_K Zienkiewicz and Zhu's indicator ||G x - grad x||_L2(K) (an
+    /// estimate of the gradient's error on K; the velocity's L2 error is
+    /// about h_K times it), unscaled.
+    template <int dim>
+    void
+    energy_error_indicators(const SimulatorAccess<dim> &access,
+                            Vector<float>              &eta);
+
+
     /**
      * A criterion whose indicators @p estimate computes from the
      * displacement, or from the velocity if @p of_velocity (estimate sets
