@@ -11,7 +11,8 @@ tau) and the adaptive run (levels 1 to 4) as given and with each Mesh
 refinement/Coarsening tolerance of --tolerances, by the criterion energy
 error instead of Kelly's, and, marked by a tolerance instead of the
 fractions, with each Mesh refinement/Error tolerance of --error-tolerances
-(the middle one also adapting every 4 steps instead of 2), all compared with the uniform level-5 run. For each
+(the middle one also adapting every 4 steps instead of 2) and of
+--volume-tolerances with Error tolerance split = by volume, all compared with the uniform level-5 run. For each
 adaptive run the script prints, against the uniform level-4 run (study
 estimates of both errors: the difference from the level-5 run plus that
 run's own estimated error): the ratios of the energy-norm error (largest
@@ -20,10 +21,10 @@ over time), of the contact-force error (largest over time / peak) and of the pos
 difference in steps, and the ratio of the run times (wall time less the
 comparisons).
 
-Usage, from the repository's top folder after tools/setup.sh (about 10
+Usage, from the repository's top folder after tools/setup.sh (about 15
 minutes on one core):
     benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]
-        [--error-tolerances 0.4,0.2,0.1]"""
+        [--error-tolerances 0.2,0.1,0.05] [--volume-tolerances 0.4,0.2]"""
 import options
 import csv
 import os
@@ -36,7 +37,10 @@ tolerances = options.take_option(arguments, "--tolerances",
                                  ["1e-3", "1e-4", "1e-5"])
 error_tolerances = options.take_option(arguments, "--error-tolerances",
                                        lambda v: [t for t in v.split(",") if t],
-                                       ["0.4", "0.2", "0.1"])
+                                       ["0.2", "0.1", "0.05"])
+volume_tolerances = options.take_option(
+    arguments, "--volume-tolerances", lambda v: [t for t in v.split(",") if t],
+    ["0.4", "0.2"])
 executable = os.path.abspath(arguments[0] if arguments else "build/dyncontact")
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 work = os.path.abspath("results-adaptive-accuracy")
@@ -79,6 +83,10 @@ command += ["--adaptive-variant",
 for t in error_tolerances:
     command += ["--adaptive-variant",
                 "delta %s:Mesh refinement/Error tolerance=%s" % (t, t)]
+for t in volume_tolerances:
+    command += ["--adaptive-variant",
+                "delta %s by volume:Mesh refinement/Error tolerance=%s;"
+                "Mesh refinement/Error tolerance split=by volume" % (t, t)]
 if error_tolerances:
     t = error_tolerances[len(error_tolerances) // 2]
     command += ["--adaptive-variant",

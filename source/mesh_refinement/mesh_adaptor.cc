@@ -98,19 +98,34 @@ namespace dyncontact
       "0",
       Patterns::Double(0., 1.),
       "Marking by a tolerance delta instead of the fractions: the "
-      "estimated error of each cell K, eta_K = 1/2 rho h_K^2 k_K(u_dot)^2 + "
-      "1/2 (lambda + 2 mu) k_K(u)^2 (J; the criterion energy error; k_K: Zienkiewicz and Zhu's indicator, the "
-      "estimate of the gradient's error on K), is compared with its share "
-      "delta^2 E |K| / |bodies| of the tolerance (E: the kinetic and "
-      "elastic energy, J): a cell above it is refined, every other one is "
-      "coarsened where the coarsening limit allows (Coarsening tolerance, "
-      "or delta^2 / 4 without one), so that the estimated error in the "
-      "energy norm, relative to sqrt(E), stays about delta. Refine fraction, "
-      "Coarsen fraction and the indicators of Criteria are then not used "
-      "(the contact zone's flags are). Dimensionless, 0 to 1; 0: the "
-      "fractions. Statistics columns estimated_error (sqrt(sum eta_K / "
-      "E)) and cells_above_tolerance (cells at Maximum level above their "
-      "share) when > 0.");
+      "estimated error energy of each cell K, eta_K = 1/2 rho h_K^2 "
+      "k_K(u_dot)^2 + 1/2 (lambda + 2 mu) k_K(u)^2 (J; the criterion energy "
+      "error; k_K: Zienkiewicz and Zhu's indicator, the estimate of the "
+      "gradient's error on K), summed over the cells, S, is compared with "
+      "delta^2 E (E: the kinetic and elastic energy, J): where S exceeds it, "
+      "the cells of the largest eta_K are refined whose sum brings S to "
+      "about half of delta^2 E (a refinement divides a cell's error energy "
+      "by about 4^p); every other cell is coarsened where the coarsening "
+      "limit allows (Coarsening tolerance, or delta^2 / 4 without one), so "
+      "that the estimated error in the energy norm relative to sqrt(E), "
+      "sqrt(S / E), stays about delta. Refine fraction, Coarsen fraction "
+      "and the indicators of Criteria are then not used (the contact "
+      "zone's flags are). Dimensionless, 0 to 1; 0: the fractions. "
+      "Statistics columns estimated_error (sqrt(S / E) at the adaptations, "
+      "before they refine) and cells_above_tolerance (cells the tolerance "
+      "would refine that are at Maximum level) when > 0.");
+    prm.declare_entry(
+      "Error tolerance split",
+      "global",
+      Patterns::Selection("global|by volume"),
+      "How Error tolerance splits delta^2 E over the cells: global: the "
+      "cells of the largest estimates are refined until their sum would be "
+      "about half of it (Doerfler's marking: the fewest cells for the whole "
+      "run's energy-norm error); by volume: every cell K whose estimate "
+      "exceeds delta^2 E |K| / |bodies| is refined (the error's density "
+      "kept below delta^2 E / |bodies| everywhere: it refines the contact "
+      "zone's steep strains to Maximum level, where the contact force is "
+      "decided).");
     std::string documentation;
     for (const auto &info :
          PluginRegistry<MeshRefinement::Interface>::plugins())
@@ -148,6 +163,7 @@ namespace dyncontact
     front_widening       = prm.get_double("Front widening");
     coarsening_tolerance = prm.get_double("Coarsening tolerance");
     error_tolerance      = prm.get_double("Error tolerance");
+    split_by_volume      = prm.get("Error tolerance split") == "by volume";
     const auto selected  = Utilities::split_string_list(prm.get("Criteria"));
     prm.leave_subsection();
     AssertThrow(min_level <= max_level,
@@ -532,6 +548,10 @@ namespace dyncontact
             unread.emplace_back("Mesh refinement/" + entry,
                                 "the cells are marked by Mesh "
                                 "refinement/Error tolerance");
+        else
+          unread.emplace_back("Mesh refinement/Error tolerance split",
+                              "the cells are marked by the fractions (Mesh "
+                              "refinement/Error tolerance = 0)");
         return unread;
       }
     for (const std::string entry : {"Refinement interval",
@@ -539,6 +559,7 @@ namespace dyncontact
                                     "Coarsen fraction",
                                     "Coarsening tolerance",
                                     "Error tolerance",
+                                    "Error tolerance split",
                                     "Minimum level",
                                     "Front widening",
                                     "Criteria"})

@@ -1,41 +1,90 @@
-// Marking by a tolerance: each cell's estimated error, in the energy of the
-// physical energy norm, against its share of the tolerance.
+// Marking by a tolerance: the estimated energy of the error, summed over
+// the cells, against the tolerance's share delta^2 E of the energy; the
+// cells with the largest estimates are refined until the sum would be
+// below half of it (Doerfler's marking, deal.II's fixed fraction of the
+// error), or each cell above its share by volume; the others coarsened where
+// the coarsening limit allows.
 
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/fe/fe.h>
 #include <deal.II/grid/tria.h>
 
+#include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/mesh_refinement/interface.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 
 #include <cmath>
+#include <limits>
 
 namespace dyncontact
 {
   /**
    * The estimate of a cell K: eta_K = 1/2 rho h_K^2 k_K(u_dot)^2 + 1/2
    * (lambda + 2 mu) k_K(u)^2 (J, or J/m in 2D;
-   * MeshRefinement::energy_error_indicators()). Cells with eta_K > delta^2
-   * E |K| / |bodies| are refined (at Maximum level they are counted), all
-   * others flagged for coarsening, which limit_coarsening() then refuses
-   * to every family whose coarsening would remove more than delta^2 / 4 of
-   * its share of E (or Coarsening tolerance).
+   * MeshRefinement::energy_error_indicators()), summed: S. Split
+   * "globally": if S exceeds
+   * T = delta^2 E, the cells with the largest eta_K are refined whose sum
+   * is at least (S - T/2) / (1 - 4^-p): refining a cell divides its error
+   * energy by about 4^p, so that S falls to about T/2 (all cells if that
+   * is more than S). Split "by volume": the cells with eta_K > delta^2 E
+   * |K| / |bodies| are refined. Those at Maximum level are counted
+   * instead. All other
+   * cells are flagged for coarsening, which limit_coarsening() then
+   * refuses to every family whose coarsening would remove more than
+   * delta^2 / 4 of its share of E (or Coarsening tolerance).
    */
   template <int dim>
   std::pair<double, unsigned int>
   MeshAdaptor<dim>::mark_by_tolerance(Triangulation<dim> &triangulation) const
   {
-    Vector<float> eta(triangulation.n_active_cells());
+    namespace Thresholds = internal::parallel::distributed::GridRefinement;
+    const MPI_Comm comm  = this->get_mpi_communicator();
+    Vector<float>  eta(triangulation.n_active_cells());
     MeshRefinement::energy_error_indicators(*this, eta);
     const auto [total, volume] = energy_and_volume();
-    const double density =
-      error_tolerance * error_tolerance * total / (volume > 0. ? volume : 1.);
-    double       sum   = 0.;
+
+    // this rank's estimates, their sum over all ranks
+    std::vector<float> owned;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned.push_back(eta[cell->active_cell_index()]);
+    double sum = 0.;
+    for (const float e : owned)
+      sum += e;
+    sum = Utilities::MPI::sum(sum, comm);
+
+    // global: the threshold above which the cells hold the share of S to
+    // refine; by volume: each cell's share of delta^2 E
+    const double       allowed   = error_tolerance * error_tolerance * total;
+    const unsigned int p         = this->get_system().get_fe().degree;
+    const double       gain      = 1. - std::pow(4., -double(p));
+    double             threshold = std::numeric_limits<double>::max();
+    if (split_by_volume)
+      threshold = allowed / (volume > 0. ? volume : 1.); // per m^dim
+    else if (sum > allowed)
+      {
+        const double share = (sum - 0.5 * allowed) / gain;
+        if (share >= sum)
+          threshold = -1.; // every cell
+        else
+          {
+            const Vector<float> local(owned.begin(), owned.end());
+            threshold =
+              Thresholds::RefineAndCoarsenFixedFraction::compute_threshold(
+                local,
+                Thresholds::compute_global_min_and_max_at_root(local, comm),
+                share,
+                comm);
+          }
+      }
+
     unsigned int above = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const double eta_K = eta[cell->active_cell_index()];
-          sum += eta_K;
-          if (eta_K > density * cell->measure())
+          const double scale = split_by_volume ? cell->measure() : 1.;
+          if (eta_K > threshold * scale && eta_K > 0.)
             {
               if (cell->level() < int(max_level))
                 cell->set_refine_flag();
@@ -45,8 +94,6 @@ namespace dyncontact
           else
             cell->set_coarsen_flag();
         }
-    const MPI_Comm comm = this->get_mpi_communicator();
-    sum                 = Utilities::MPI::sum(sum, comm);
     return {total > 0. ? std::sqrt(sum / total) : 0.,
             Utilities::MPI::sum(above, comm)};
   }

@@ -83,16 +83,16 @@ namespace dyncontact
               }
             out << "error tolerance: Mesh refinement/Error tolerance = "
                 << delta
-                << "; the estimated error (energy norm relative to sqrt(E), "
-                   "at the adaptations) at most "
-                << estimate
-                << (estimate > delta ? " (above the tolerance)" : "");
+                << "; the estimated error (energy norm relative to sqrt(E)) "
+                   "at most "
+                << estimate << " at an adaptation, before it refined";
             if (rows_above > 0)
-              out << "; not kept everywhere: up to " << above
-                  << " cells at Mesh refinement/Maximum level = "
-                  << adaptor.get_max_level()
-                  << " were above their share of it (in " << rows_above
-                  << " statistics rows): raise Maximum level or the tolerance";
+              out << "; NOT KEPT: up to " << above
+                  << " cells that the tolerance would refine were at Mesh "
+                     "refinement/Maximum level = "
+                  << adaptor.get_max_level() << " (in " << rows_above
+                  << " statistics rows): raise Maximum level or the "
+                     "tolerance";
             out << "\n";
           }
         return out.str();

@@ -27,8 +27,8 @@ namespace dyncontact
    * the top fraction refined and the bottom fraction coarsened, then each
    * criterion flags the cells it insists on), within the level bounds.
    * With an "Error tolerance" delta > 0 the cells are marked by their
-   * estimated errors against their shares of delta^2 E instead of the
-   * fractions (mark_by_tolerance()).
+   * estimated errors against delta^2 E instead of the fractions
+   * (mark_by_tolerance()).
    * With "Front widening" w > 0, every cell of level l within w c tau n
    * max(1, Maximum level - l) of a cell the indicators refine (c the
    * fastest wave speed of the bodies, n the interval) is refined too and
@@ -192,11 +192,12 @@ namespace dyncontact
     std::pair<unsigned int, double>
     limit_coarsening() const;
 
-    /// With an "Error tolerance" delta: flags for refinement the cells whose
-    /// estimated error eta_K (J) exceeds delta^2 E |K| / |bodies|, and every
-    /// other cell for coarsening (limit_coarsening() decides which
-    /// families are). Returns the estimated relative error sqrt(sum eta_K /
-    /// E) and the cells above their share at Maximum level, over all ranks.
+    /// With an "Error tolerance" delta: flags for refinement the cells of
+    /// the largest estimated errors eta_K (J) that bring their sum S to
+    /// about half of delta^2 E where S exceeds it, and every other cell for
+    /// coarsening (limit_coarsening() decides which families are). Returns
+    /// the estimated relative error sqrt(S / E) and the cells to refine
+    /// that are at Maximum level, over all ranks.
     std::pair<double, unsigned int>
     mark_by_tolerance(Triangulation<dim> &triangulation) const;
 
@@ -209,6 +210,8 @@ namespace dyncontact
     double       front_widening       = 0.;
     double       coarsening_tolerance = 0.;
     double       error_tolerance      = 0.;
+    /// "Error tolerance split" = by volume (else global)
+    bool split_by_volume = false;
     /// limit_coarsening()'s result of the last marking
     mutable std::pair<unsigned int, double> coarsening_limited;
     /// mark_by_tolerance()'s result of the last marking

@@ -26,8 +26,8 @@ namespace dyncontact
     /// With an "Error tolerance": the largest estimated relative error
     /// sqrt(sum eta_K / E) at an adaptation.
     double estimated_error = 0.;
-    /// With an "Error tolerance": the most cells at Maximum level whose
-    /// estimated error exceeded their share at an adaptation.
+    /// With an "Error tolerance": the most cells at Maximum level that the
+    /// tolerance would have refined at an adaptation.
     unsigned int cells_above_tolerance = 0;
 
     /// One transfer changed the energy by @p energy and left the
@@ -41,7 +41,7 @@ namespace dyncontact
     add_coarsening(const unsigned int refused, const double removed);
 
     /// One adaptation marked by the tolerance: the estimated relative error
-    /// @p estimate, @p above cells above their share at Maximum level.
+    /// @p estimate, @p above cells to refine at Maximum level.
     void
     add_estimate(const double estimate, const unsigned int above);
 
