@@ -12,7 +12,10 @@
 //   adaptation's coarsening removes more than delta^2 / 4 of the energy
 //   (the limit the tolerance implies); summary.txt says that the tolerance
 //   was not kept exactly when cells it would refine were at Maximum level
-//   (column cells_above_tolerance).
+//   (column cells_above_tolerance); with delta = 0.1, a run resumed from a
+//   checkpoint at t = 1 s has the same DoFs, estimates and cells above the
+//   tolerance in every row, and (on one rank) the serial triangulation
+//   the same DoFs in every row and the same exact error.
 // And on the Hertz drop of prm/hertz_drop_adaptive.prm (Maximum level 4,
 // to 1 s), where the error is local, against the uniform level-4 mesh's
 // states: halving the tolerance (0.2 to 0.1) halves the error within a
@@ -101,6 +104,46 @@ main(int argc, char **argv)
       log() << "   more DoFs than with 0.4: " << check(dofs > loose_dofs)
             << "; exact error (largest over time) at least 20 % below: "
             << check(error <= 0.8 * loose_error) << "\n";
+
+      // resumed from a checkpoint at t = 1 s: the same marking after it
+      const auto split = [&](const double end, const bool resume) {
+        return bar_prm(2, "N-CS++", 10, 0.01, end, s.str()) +
+               "set Output directory = resumed\n"
+               "subsection Checkpointing\n  set Interval in steps = 100\n"
+               "  set Resume = " +
+               (resume ? "true" : "false") + "\nend\n";
+      };
+      run(split(1., false));
+      const Statistics resumed = run(split(2.5, true));
+      bool same = resumed.column("dofs").size() == stats.column("dofs").size();
+      for (unsigned int i = 0; same && i < stats.column("dofs").size(); ++i)
+        same = resumed.column("dofs")[i] == stats.column("dofs")[i] &&
+               std::abs(resumed.column("estimated_error")[i] -
+                        stats.column("estimated_error")[i]) <= 1e-9 &&
+               resumed.column("cells_above_tolerance")[i] ==
+                 stats.column("cells_above_tolerance")[i];
+      log() << "   resumed from t = 1 s: the same DoFs, estimates and cells "
+               "above the tolerance in every row: "
+            << check(same) << "\n";
+
+      // the serial triangulation marks the same cells (on one rank)
+      if (n_ranks() > 1)
+        continue;
+      const Statistics serial =
+        run(bar_prm(2,
+                    "N-CS++",
+                    10,
+                    0.01,
+                    2.5,
+                    s.str() +
+                      "subsection Mesh\n  set Triangulation = serial\nend\n"));
+      log() << "   the serial triangulation: the same DoFs in every row, the "
+               "same exact error: "
+            << check(serial.column("dofs") == stats.column("dofs") &&
+                     std::abs(max_of(serial.column("error_energy_norm")) /
+                                std::sqrt(energy) -
+                              error) <= 1e-6)
+            << "\n";
     }
 
   // halving the tolerance on the Hertz drop, against the uniform mesh of

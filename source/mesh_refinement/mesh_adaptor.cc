@@ -171,6 +171,10 @@ namespace dyncontact
                            std::to_string(min_level) +
                            ") must not exceed Mesh refinement/Maximum level (" +
                            std::to_string(max_level) + ")."));
+    AssertThrow(error_tolerance == 0. || error_tolerance >= 1e-100,
+                ExcMessage("Mesh refinement/Error tolerance must be 0 (the "
+                           "fractions) or in [1e-100, 1] (its square must "
+                           "not vanish)."));
     AssertThrow(refine_fraction + coarsen_fraction <= 1.,
                 ExcMessage("Mesh refinement: Refine fraction + Coarsen "
                            "fraction must not exceed 1."));
@@ -517,84 +521,6 @@ namespace dyncontact
     const double tau = control.is_adaptive() ? control.get_maximum_timestep() :
                                                control.get_timestep();
     return front_widening * wave_speed * tau * interval;
-  }
-
-
-
-  template <int dim>
-  std::vector<std::pair<std::string, std::string>>
-  MeshAdaptor<dim>::unread_entries(const bool is_static) const
-  {
-    const bool        adapts = interval > 0 && !is_static;
-    const std::string why =
-      interval > 0 ? "the static problem takes no time steps (one solve), so "
-                     "the mesh does not adapt during the run" :
-                     "the mesh does not adapt during the run (Mesh "
-                     "refinement/Refinement interval = 0)";
-    std::vector<std::pair<std::string, std::string>> unread;
-    if (adapts)
-      {
-        if (initial_refinements == 0 &&
-            std::find(criterion_names.begin(),
-                      criterion_names.end(),
-                      "contact zone") == criterion_names.end())
-          unread.emplace_back("Mesh refinement/Contact zone",
-                              "no criterion of Mesh refinement/Criteria is "
-                              "the contact zone, and Initial contact "
-                              "refinements = 0");
-        if (error_tolerance > 0.)
-          for (const std::string entry :
-               {"Refine fraction", "Coarsen fraction"})
-            unread.emplace_back("Mesh refinement/" + entry,
-                                "the cells are marked by Mesh "
-                                "refinement/Error tolerance");
-        else
-          unread.emplace_back("Mesh refinement/Error tolerance split",
-                              "the cells are marked by the fractions (Mesh "
-                              "refinement/Error tolerance = 0)");
-        return unread;
-      }
-    for (const std::string entry : {"Refinement interval",
-                                    "Refine fraction",
-                                    "Coarsen fraction",
-                                    "Coarsening tolerance",
-                                    "Error tolerance",
-                                    "Error tolerance split",
-                                    "Minimum level",
-                                    "Front widening",
-                                    "Criteria"})
-      if (entry != std::string("Refinement interval") || interval > 0)
-        unread.emplace_back("Mesh refinement/" + entry, why);
-    if (initial_refinements == 0)
-      for (const std::string entry : {"Maximum level", "Contact zone"})
-        unread.emplace_back("Mesh refinement/" + std::string(entry),
-                            why + ", and Initial contact refinements = 0");
-    return unread;
-  }
-
-
-
-  template <int dim>
-  std::string
-  MeshAdaptor<dim>::memory_remedy(const bool initial) const
-  {
-    std::ostringstream text; // 6 digits
-    if (initial)
-      {
-        text << "Mesh refinement/Initial contact refinements (now "
-             << initial_refinements << ") or Maximum level (now " << max_level
-             << ")";
-        return text.str();
-      }
-    text << "Mesh refinement/Maximum level (now " << max_level << "), ";
-    if (error_tolerance > 0.)
-      text << "raise Error tolerance (now " << error_tolerance << ")";
-    else
-      text << "Refine fraction (now " << refine_fraction << ")";
-    if (front_widening > 0.)
-      text << ", Front widening (now " << front_widening << ")";
-    text << ", or raise Refinement interval (now " << interval << ")";
-    return text.str();
   }
 
 

@@ -8,7 +8,9 @@
 #include <dyncontact/postprocess/interface.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -31,10 +33,11 @@ namespace dyncontact
         const auto              &adaptor = this->get_mesh_adaptor();
         std::vector<std::string> names{"energy_transfer",
                                        "transfer_penetration"};
-        if (adaptor.get_coarsening_tolerance() > 0.)
+        if (adaptor.get_coarsening_tolerance() > 0. &&
+            adaptor.adapts_during_run())
           names.insert(names.end(),
                        {"coarsening_refused", "coarsening_removed"});
-        if (adaptor.get_error_tolerance() > 0.)
+        if (adaptor.get_error_tolerance() > 0. && adaptor.adapts_during_run())
           names.insert(names.end(),
                        {"estimated_error", "cells_above_tolerance"});
         return names;
@@ -45,8 +48,10 @@ namespace dyncontact
       /// tolerance: the largest estimate, and whether cells at Maximum level
       /// stayed above their share.
       std::string
-      summary(const Statistics &s, const SummaryInput &) const override
+      summary(const Statistics &s, const SummaryInput &input) const override
       {
+        if (input.is_static) // (one solve: no adaptation)
+          return "";
         const auto        &adaptor   = this->get_mesh_adaptor();
         const double       tolerance = adaptor.get_coarsening_tolerance();
         const double       delta     = adaptor.get_error_tolerance();
@@ -61,11 +66,11 @@ namespace dyncontact
               removed += r;
             out << "coarsening: " << refused << " families kept by Mesh "
                 << "refinement/"
-                << (delta > 0. && tolerance == 0.25 * delta * delta ?
+                << (adaptor.coarsening_limit_of_error_tolerance() ?
                       "Error tolerance (the coarsening limit delta^2/4 = " :
                       "Coarsening tolerance = ")
                 << tolerance
-                << (delta > 0. && tolerance == 0.25 * delta * delta ? ")" : "")
+                << (adaptor.coarsening_limit_of_error_tolerance() ? ")" : "")
                 << " (their coarsening would have removed more than their "
                    "share); the parts removed by the others: "
                 << removed << " J in all\n";
@@ -87,7 +92,11 @@ namespace dyncontact
                    "at most "
                 << estimate << " at an adaptation, before it refined";
             if (rows_above > 0)
-              out << "; NOT KEPT: up to " << above
+              out << "; NOT KEPT"
+                  << (adaptor.error_tolerance_split_by_volume() ?
+                        " by volume (the error's density, not its sum)" :
+                        "")
+                  << ": up to " << above
                   << " cells that the tolerance would refine were at Mesh "
                      "refinement/Maximum level = "
                   << adaptor.get_max_level() << " (in " << rows_above
@@ -103,13 +112,16 @@ namespace dyncontact
       {
         const auto &record = this->get_mesh_transfer();
         row.insert(row.end(), {record.energy_change, record.penetration});
-        if (this->get_mesh_adaptor().get_coarsening_tolerance() > 0.)
+        const auto &adaptor = this->get_mesh_adaptor();
+        if (adaptor.get_coarsening_tolerance() > 0. &&
+            adaptor.adapts_during_run())
           row.insert(row.end(),
                      {double(record.coarsening_refused),
                       record.coarsening_removed});
-        if (this->get_mesh_adaptor().get_error_tolerance() > 0.)
+        // (0 in rows without an adaptation)
+        if (adaptor.get_error_tolerance() > 0. && adaptor.adapts_during_run())
           row.insert(row.end(),
-                     {record.estimated_error,
+                     {std::max(record.estimated_error, 0.),
                       double(record.cells_above_tolerance)});
       }
     };

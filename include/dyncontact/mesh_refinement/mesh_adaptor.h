@@ -110,6 +110,21 @@ namespace dyncontact
       return error_tolerance;
     }
 
+    /// Whether the coarsening limit is the Error tolerance's delta^2 / 4
+    /// (no Coarsening tolerance given).
+    bool
+    coarsening_limit_of_error_tolerance() const
+    {
+      return coarsening_tolerance == 0. && error_tolerance > 0.;
+    }
+
+    /// Whether "Error tolerance split" is by volume (else global).
+    bool
+    error_tolerance_split_by_volume() const
+    {
+      return split_by_volume;
+    }
+
     /// Before t = 0: refines the contact zone of @p problem's initial
     /// state "Initial contact refinements" times (fewer, with a warning,
     /// where no cell is flagged), setting the problem up on each mesh.

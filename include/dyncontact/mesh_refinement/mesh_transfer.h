@@ -24,10 +24,9 @@ namespace dyncontact
     /// 1/2 ||v||^2_{L2(rho)} + 1/2 a(u, u) of the difference.
     double coarsening_removed = 0.;
     /// With an "Error tolerance": the largest estimated relative error
-    /// sqrt(sum eta_K / E) at an adaptation.
-    double estimated_error = 0.;
-    /// With an "Error tolerance": the most cells at Maximum level that the
-    /// tolerance would have refined at an adaptation.
+    /// sqrt(sum eta_K / E) at an adaptation; -1: no adaptation since the
+    /// last row.
+    double       estimated_error       = -1.;
     unsigned int cells_above_tolerance = 0;
 
     /// One transfer changed the energy by @p energy and left the
