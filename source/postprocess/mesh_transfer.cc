@@ -100,7 +100,8 @@ namespace dyncontact
                   << " cells that the tolerance would refine were at Mesh "
                      "refinement/Maximum level = "
                   << adaptor.get_max_level() << " (in " << rows_above
-                  << " statistics rows): raise Maximum level or the "
+                  << (rows_above == 1 ? " statistics row" : " statistics rows")
+                  << "): raise Maximum level or the "
                      "tolerance";
             out << "\n";
           }
