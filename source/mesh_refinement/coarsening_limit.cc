@@ -91,7 +91,8 @@ namespace dyncontact
 
   template <int dim>
   std::pair<unsigned int, double>
-  MeshAdaptor<dim>::limit_coarsening() const
+  MeshAdaptor<dim>::limit_coarsening(
+    const std::pair<double, double> &energy_state) const
   {
     const SemiDiscreteSystem<dim> &system = this->get_system();
     const DoFHandler<dim>         &dofs   = system.get_dof_handler();
@@ -100,7 +101,7 @@ namespace dyncontact
     const auto                     u = system.ghosted(this->get_solution()),
                v                     = system.ghosted(this->get_velocity());
     const double tolerance           = get_coarsening_tolerance();
-    const auto [total, volume]       = energy_and_volume();
+    const auto [total, volume]       = energy_state;
     CellEnergy<dim>    energy(*this);
     const unsigned int n = fe.n_dofs_per_cell();
     Vector<double>     cu(n), cv(n), pu(n), pv(n), tmp(n);
@@ -158,7 +159,7 @@ namespace dyncontact
   template std::pair<double, double>
   MeshAdaptor<3>::energy_and_volume() const;
   template std::pair<unsigned int, double>
-  MeshAdaptor<2>::limit_coarsening() const;
+  MeshAdaptor<2>::limit_coarsening(const std::pair<double, double> &) const;
   template std::pair<unsigned int, double>
-  MeshAdaptor<3>::limit_coarsening() const;
+  MeshAdaptor<3>::limit_coarsening(const std::pair<double, double> &) const;
 } // namespace dyncontact

@@ -440,16 +440,23 @@ namespace dyncontact
   void
   MeshAdaptor<dim>::mark_cells(Triangulation<dim> &triangulation) const
   {
-    // indicators of all criteria, each scaled to maximum 1, added (not
-    // with a tolerance)
+    // the state's energy and the bodies' volume, once for the tolerance
+    // and the coarsening limit
+    const bool                      limited = get_coarsening_tolerance() > 0.;
+    const std::pair<double, double> energy =
+      error_tolerance > 0. || limited ? energy_and_volume() :
+                                        std::pair<double, double>(0., 0.);
+    // by the tolerance, or by the indicators of all criteria, each scaled
+    // to maximum 1, added
     Vector<float> indicators(triangulation.n_active_cells());
-    if (error_tolerance == 0.)
+    if (error_tolerance > 0.)
+      tolerance_marked = mark_by_tolerance(triangulation, energy);
+    else
       for (const auto &criterion : criteria)
         criterion->execute(indicators);
-    if (error_tolerance > 0.)
-      tolerance_marked = mark_by_tolerance(triangulation);
-    else if (Utilities::MPI::max(double(indicators.linfty_norm()),
-                                 this->get_mpi_communicator()) > 0.)
+    if (error_tolerance == 0. &&
+        Utilities::MPI::max(double(indicators.linfty_norm()),
+                            this->get_mpi_communicator()) > 0.)
       {
         refine_and_coarsen_fixed_number(triangulation,
                                         indicators,
@@ -497,9 +504,8 @@ namespace dyncontact
           if (cell->level() <= int(min_level))
             cell->clear_coarsen_flag();
         }
-    coarsening_limited = get_coarsening_tolerance() > 0. ?
-                           limit_coarsening() :
-                           std::pair<unsigned int, double>(0, 0.);
+    coarsening_limited = limited ? limit_coarsening(energy) :
+                                   std::pair<unsigned int, double>(0, 0.);
   }
 
 

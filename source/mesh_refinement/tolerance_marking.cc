@@ -35,13 +35,15 @@ namespace dyncontact
    */
   template <int dim>
   std::pair<double, unsigned int>
-  MeshAdaptor<dim>::mark_by_tolerance(Triangulation<dim> &triangulation) const
+  MeshAdaptor<dim>::mark_by_tolerance(
+    Triangulation<dim>              &triangulation,
+    const std::pair<double, double> &energy) const
   {
     namespace Thresholds = internal::parallel::distributed::GridRefinement;
     const MPI_Comm comm  = this->get_mpi_communicator();
     Vector<float>  eta(triangulation.n_active_cells());
     MeshRefinement::energy_error_indicators(*this, eta);
-    const auto [total, volume] = energy_and_volume();
+    const auto [total, volume] = energy;
 
     // this rank's estimates, their sum over all ranks
     std::vector<float> owned;
@@ -99,7 +101,9 @@ namespace dyncontact
   }
 
   template std::pair<double, unsigned int>
-  MeshAdaptor<2>::mark_by_tolerance(Triangulation<2> &) const;
+  MeshAdaptor<2>::mark_by_tolerance(Triangulation<2> &,
+                                    const std::pair<double, double> &) const;
   template std::pair<double, unsigned int>
-  MeshAdaptor<3>::mark_by_tolerance(Triangulation<3> &) const;
+  MeshAdaptor<3>::mark_by_tolerance(Triangulation<3> &,
+                                    const std::pair<double, double> &) const;
 } // namespace dyncontact

@@ -8,9 +8,7 @@
 #include <dyncontact/postprocess/interface.h>
 
 #include <algorithm>
-#include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace dyncontact
@@ -30,14 +28,12 @@ namespace dyncontact
       std::vector<std::string>
       columns() const override
       {
-        const auto              &adaptor = this->get_mesh_adaptor();
         std::vector<std::string> names{"energy_transfer",
                                        "transfer_penetration"};
-        if (adaptor.get_coarsening_tolerance() > 0. &&
-            adaptor.adapts_during_run())
+        if (limit_columns())
           names.insert(names.end(),
                        {"coarsening_refused", "coarsening_removed"});
-        if (adaptor.get_error_tolerance() > 0. && adaptor.adapts_during_run())
+        if (tolerance_columns())
           names.insert(names.end(),
                        {"estimated_error", "cells_above_tolerance"});
         return names;
@@ -113,17 +109,33 @@ namespace dyncontact
       {
         const auto &record = this->get_mesh_transfer();
         row.insert(row.end(), {record.energy_change, record.penetration});
-        const auto &adaptor = this->get_mesh_adaptor();
-        if (adaptor.get_coarsening_tolerance() > 0. &&
-            adaptor.adapts_during_run())
+        if (limit_columns())
           row.insert(row.end(),
                      {double(record.coarsening_refused),
                       record.coarsening_removed});
         // (0 in rows without an adaptation)
-        if (adaptor.get_error_tolerance() > 0. && adaptor.adapts_during_run())
+        if (tolerance_columns())
           row.insert(row.end(),
-                     {std::max(record.estimated_error, 0.),
+                     {record.estimated_error,
                       double(record.cells_above_tolerance)});
+      }
+
+    private:
+      /// The columns of the coarsening limit, of the error tolerance: with
+      /// each, when the mesh adapts during the run.
+      bool
+      limit_columns() const
+      {
+        const auto &adaptor = this->get_mesh_adaptor();
+        return adaptor.get_coarsening_tolerance() > 0. &&
+               adaptor.adapts_during_run();
+      }
+      bool
+      tolerance_columns() const
+      {
+        const auto &adaptor = this->get_mesh_adaptor();
+        return adaptor.get_error_tolerance() > 0. &&
+               adaptor.adapts_during_run();
       }
     };
 

@@ -202,19 +202,21 @@ namespace dyncontact
     /// Clears the coarsening flags of every family of cells whose
     /// coarsening would remove more than its share of
     /// get_coarsening_tolerance() times the energy (the family's share of the
-    /// bodies' volume); returns the families refused and the energy the others
-    /// remove (J), over all ranks.
+    /// bodies' volume; @p energy: energy_and_volume()); returns the families
+    /// refused and the energy the others remove (J), over all ranks.
     std::pair<unsigned int, double>
-    limit_coarsening() const;
+    limit_coarsening(const std::pair<double, double> &energy) const;
 
     /// With an "Error tolerance" delta: flags for refinement the cells of
     /// the largest estimated errors eta_K (J) that bring their sum S to
     /// about half of delta^2 E where S exceeds it, and every other cell for
     /// coarsening (limit_coarsening() decides which families are). Returns
     /// the estimated relative error sqrt(S / E) and the cells to refine
-    /// that are at Maximum level, over all ranks.
+    /// that are at Maximum level, over all ranks (@p energy:
+    /// energy_and_volume()).
     std::pair<double, unsigned int>
-    mark_by_tolerance(Triangulation<dim> &triangulation) const;
+    mark_by_tolerance(Triangulation<dim>              &triangulation,
+                      const std::pair<double, double> &energy) const;
 
     unsigned int interval             = 0;
     unsigned int min_level            = 0;

@@ -24,9 +24,8 @@ namespace dyncontact
     /// 1/2 ||v||^2_{L2(rho)} + 1/2 a(u, u) of the difference.
     double coarsening_removed = 0.;
     /// With an "Error tolerance": the largest estimated relative error
-    /// sqrt(sum eta_K / E) at an adaptation; -1: no adaptation since the
-    /// last row.
-    double       estimated_error       = -1.;
+    /// sqrt(sum eta_K / E) at an adaptation (0: none since the last row).
+    double       estimated_error       = 0.;
     unsigned int cells_above_tolerance = 0;
 
     /// One transfer changed the energy by @p energy and left the
