@@ -95,9 +95,11 @@ main(int argc, char **argv)
 
   for (const std::string scheme : {"N-CI", "N-CS", "N-CS++"})
     {
-      const Statistics fixed = run(bar_prm(2, scheme, 40, tau, 2.5, off_grid));
-      const Statistics s     = run(bar_prm(2, scheme, 40, tau, 2.5, adaptive));
-      const auto       t = s.column("time"), dt = s.column("time_step");
+      const Statistics fixed =
+        run(tight_steps() + bar_prm(2, scheme, 40, tau, 2.5, off_grid));
+      const Statistics s =
+        run(tight_steps() + bar_prm(2, scheme, 40, tau, 2.5, adaptive));
+      const auto t = s.column("time"), dt = s.column("time_step");
 
       const double fixed_miss = std::abs(contact_start(fixed) - contact_time);
       const double miss       = std::abs(contact_start(s) - contact_time);
@@ -182,7 +184,7 @@ main(int argc, char **argv)
       {
         const std::string dir = "output-hertz-" + location.substr(0, 5);
         const Statistics  s =
-          run(base + "set Output directory = " + dir +
+          run(tight_steps() + base + "set Output directory = " + dir +
               "\nsubsection Output\n  set Write vtu = false\nend\n"
               "subsection Time integration\n  set End time = 0.6\n"
               "  set Time step control = adaptive\n"
@@ -211,7 +213,8 @@ main(int argc, char **argv)
   // two bodies: the same steps on any number of ranks
   {
     const Statistics s =
-      run(bar_prm(2,
+      run(tight_steps() +
+          bar_prm(2,
                   "N-CS++",
                   40,
                   tau,
@@ -245,7 +248,7 @@ main(int argc, char **argv)
            std::to_string(interval) +
            "\n  set Resume = " + (resume ? "true" : "false") + "\nend\n";
   };
-  const Statistics full = run(prm("full", 2.5, false, 60));
+  const Statistics full = run(tight_steps() + prm("full", 2.5, false, 60));
   // the release: the first step without contact force after one with it
   const auto   force   = full.column("contact_force");
   const auto   times   = full.column("time");
@@ -262,9 +265,11 @@ main(int argc, char **argv)
                         times[release - 1],
                         release - 1)})
     {
-      run(prm("split-" + std::to_string(interval), end, false, interval));
+      run(tight_steps() +
+          prm("split-" + std::to_string(interval), end, false, interval));
       const Statistics resumed =
-        run(prm("split-" + std::to_string(interval), 2.5, true, interval));
+        run(tight_steps() +
+            prm("split-" + std::to_string(interval), 2.5, true, interval));
       double difference = 0.;
       bool   same_shape = full.rows.size() == resumed.rows.size() &&
                         full.columns == resumed.columns;

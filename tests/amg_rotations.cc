@@ -20,7 +20,8 @@ main(int argc, char **argv)
     {
       const unsigned int cells = (dim == 3) ? 64 : 128;
       auto               solve = [&](const std::string &modes) {
-        return run(bar_prm(dim,
+        return run(tight_steps() +
+                   bar_prm(dim,
                            "N-CS++",
                            cells,
                            0.05,

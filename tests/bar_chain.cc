@@ -52,8 +52,7 @@ main(int argc, char **argv)
                                  std::to_string(run_case.along) +
                                  "\n    set Cells across = " +
                                  (run_case.dim == 2 ? "4" : "2") + "\n") +
-                       "subsection Contact solver\n"
-                       "  set Linear solver tolerance = 1e-14\nend\n")
+                       tight_steps())
           // the bars' geometry and the striker's speed and gap
           << scene_entries("Bar chain",
                            "    set Length = 1\n    set Height = 0.1\n"

@@ -18,9 +18,11 @@ main(int argc, char **argv)
       {
         const unsigned int cells = 20;
         const double       tau   = 1. / cells / 2.;
-        const Statistics   plain = run(bar_prm(dim, scheme, cells, tau, 2.5));
-        const Statistics   rotated =
-          run(bar_prm(dim,
+        const Statistics   plain =
+          run(tight_steps() + bar_prm(dim, scheme, cells, tau, 2.5));
+        const Statistics rotated =
+          run(tight_steps() +
+              bar_prm(dim,
                       scheme,
                       cells,
                       tau,

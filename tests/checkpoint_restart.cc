@@ -85,9 +85,9 @@ main(int argc, char **argv)
                  std::to_string(c.split_step) + "\n" +
                  "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
         };
-      const Statistics full = run(prm("full", c.end, false));
-      run(prm("split", c.split, false));
-      const Statistics resumed = run(prm("split", c.end, true));
+      const Statistics full = run(tight_steps() + prm("full", c.end, false));
+      run(tight_steps() + prm("split", c.split, false));
+      const Statistics resumed = run(tight_steps() + prm("split", c.end, true));
 
       // a sampled column is sampled in the same rows, but for the first
       // run's last step, which samples it
@@ -124,7 +124,7 @@ main(int argc, char **argv)
   std::string message;
   try
     {
-      run(bar_prm(2, "N-CS++", 10, 0.0125, 2.5) +
+      run(tight_steps() + bar_prm(2, "N-CS++", 10, 0.0125, 2.5) +
           "set Output directory = results-bar-split\n"
           "subsection Checkpointing\n  set Resume = true\nend\n");
     }

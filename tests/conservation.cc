@@ -33,7 +33,8 @@ main(int argc, char **argv)
       for (const bool lumped : {true, false})
         {
           const Statistics s =
-            run(bar_prm(2,
+            run(tight_steps() +
+                bar_prm(2,
                         scheme,
                         20,
                         0.025,

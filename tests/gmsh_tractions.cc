@@ -25,8 +25,8 @@ main(int argc, char **argv)
            "  set Time step = 0.01\n  set End time = 0.1\nend\n"
            "subsection Output\n  set Write vtu = false\nend\n";
   };
-  const Statistics s =
-    run(prm("    set Neumann tractions = 11: 0, -2; 12: 3, 0\n"));
+  const Statistics s = run(
+    tight_steps() + prm("    set Neumann tractions = 11: 0, -2; 12: 3, 0\n"));
   const double t  = s.column("time").back();
   const double px = s.column("momentum_x").back();
   const double py = s.column("momentum_y").back();

@@ -59,7 +59,7 @@ main(int argc, char **argv)
         "    set Neumann tractions = 11: 0, -p0*min(t/0.5, 1)\n"})
     {
       const Statistics s =
-        run(prm("column.msh", supports + load, "3", material));
+        run(tight_steps() + prm("column.msh", supports + load, "3", material));
       const double mean    = s.column("mean_displacement_y").back();
       double       balance = 0.;
       for (const double b : s.column("energy_balance"))
@@ -76,7 +76,8 @@ main(int argc, char **argv)
   write_block_msh("free.msh", {{0, 1, 0, 0.5, 4, 2, 1, 10, 11}});
   {
     const Statistics s =
-      run(prm("free.msh",
+      run(tight_steps() +
+          prm("free.msh",
               "    set Body force = 0; -c*t\n"
               "    set Function constants = c = 3\n",
               "0.1",
@@ -90,7 +91,8 @@ main(int argc, char **argv)
     // mesh, the body force at every step): the force int q (1 + x) dx =
     // 1.5 q along x as well
     const Statistics both =
-      run(prm("free.msh",
+      run(tight_steps() +
+          prm("free.msh",
               "    set Body force = 0; -c*t\n"
               "    set Neumann tractions = 11: q*(1 + x), 0\n"
               "    set Function constants = c = 3, q = 2\n",
@@ -115,10 +117,14 @@ main(int argc, char **argv)
     "    set Obstacle point = 0, 0\n    set Obstacle normal = 0, 1\n"
     "    set Initial velocity = 0; -1\n"
     "    set Pressures = 11: 5*(1 + x^2)*min(t/0.05, 1)\n";
-  const Statistics whole   = run(prm("whole.msh", drop, "0.3", material));
-  const Statistics half    = run(prm(
-    "half.msh", drop + "    set Dirichlet tags = 12: x\n", "0.3", material));
-  double           largest = 0.;
+  const Statistics whole =
+    run(tight_steps() + prm("whole.msh", drop, "0.3", material));
+  const Statistics half =
+    run(tight_steps() + prm("half.msh",
+                            drop + "    set Dirichlet tags = 12: x\n",
+                            "0.3",
+                            material));
+  double largest = 0.;
   for (const std::string column : {"energy_kinetic",
                                    "energy_elastic",
                                    "dissipation_viscous",

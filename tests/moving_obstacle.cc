@@ -86,7 +86,7 @@ main(int argc, char **argv)
   // 1. pushed at v
   for (const std::string scheme : {"N-CI", "N-CS", "N-CS++"})
     {
-      const Statistics s     = run(bar_prm(pushing, scheme, "0.8"));
+      const Statistics s = run(tight_steps() + bar_prm(pushing, scheme, "0.8"));
       const double     force = mean_over(s, "contact_force", 0.2, 0.8);
       const auto       t = s.column("time"), p = s.column("momentum_x");
       // the momentum gained over [0.2, 0.8] s (row 16 is t = 0.2 s)
@@ -122,8 +122,11 @@ main(int argc, char **argv)
 
   // 2. approaching from 0.05 m, stopped at t = 0.6 s
   {
-    const Statistics s      = run(bar_prm(
-      "plane -0.05, 0 normal 1, 0 moving v*min(t, 0.6), 0", "N-CS++", "1.2"));
+    const Statistics s =
+      run(tight_steps() +
+          bar_prm("plane -0.05, 0 normal 1, 0 moving v*min(t, 0.6), 0",
+                  "N-CS++",
+                  "1.2"));
     const auto [begin, end] = contact_interval(s);
     log() << "approaching at v from 0.05 m, stopped at t = 0.6 s: contact "
              "from t = "
@@ -143,7 +146,7 @@ main(int argc, char **argv)
     write_block_msh("clamped.msh",
                     {{0., 1., 0., 0.1, 40, 2, 1, 12, 12, 11, 13}});
     text.replace(text.find("bar.msh"), 7, "clamped.msh");
-    const Statistics s = run(text);
+    const Statistics s = run(tight_steps() + text);
     log() << "static, pushed 0.01 m against the clamped end: force "
           << fmt(s.column("contact_force").back() / 0.001, 4) << " E d H/L: "
           << check(std::abs(s.column("contact_force").back() / 0.001 - 1.) <
@@ -159,7 +162,8 @@ main(int argc, char **argv)
     write_block_msh("block.msh",
                     {{-0.2, 0.2, 0., 0.1, 40, 10, 1, 12, 13, 0, 0}});
     const auto force = [&](const std::string &motion) {
-      return run("set Dimension = 2\nset Output directory = results-disc\n" +
+      return run(tight_steps() +
+                 "set Dimension = 2\nset Output directory = results-disc\n" +
                  scene_prm("gmsh",
                            "    set Mesh file = block.msh\n"
                            "    set Bodies = 1\n    set Contact tags = 13\n"
@@ -189,11 +193,13 @@ main(int argc, char **argv)
   // component, and E + W_visc - W_obs never rises (its nodes come into
   // contact one after the other: it falls at each)
   {
-    const Statistics s      = run(bar_prm(
-      "plane -0.02, 0.05 normal 1, 0.3 moving v*t, 0", "N-CS++", "0.8"));
-    const auto       energy = s.column("energy_total"),
-               work         = s.column("work_obstacles"),
-               balance      = s.column("energy_balance");
+    const Statistics s = run(
+      tight_steps() + bar_prm("plane -0.02, 0.05 normal 1, 0.3 moving v*t, 0",
+                              "N-CS++",
+                              "0.8"));
+    const auto energy  = s.column("energy_total"),
+               work    = s.column("work_obstacles"),
+               balance = s.column("energy_balance");
     double increase = 0., scale = 0.;
     for (unsigned int r = 0; r < energy.size(); ++r)
       {
@@ -218,14 +224,14 @@ main(int argc, char **argv)
     };
     std::string full = checkpointed("0.4", false);
     full.replace(full.find("results-moving"), 14, "results-moving-full");
-    const Statistics uninterrupted = run(full);
-    run(checkpointed("0.2", false));
+    const Statistics uninterrupted = run(tight_steps() + full);
+    run(tight_steps() + checkpointed("0.2", false));
     // (the list written with other white space is the same input)
     std::string again = checkpointed("0.4", true);
     again.replace(again.find(pushing),
                   pushing.size(),
                   "plane 0 ,0 normal   1,0 moving v*t ,  0");
-    const Statistics resumed = run(again);
+    const Statistics resumed = run(tight_steps() + again);
     const auto [difference, worst] =
       statistics_difference(uninterrupted, resumed);
     log() << "resumed at t = 0.2 s (Obstacles written with other white "

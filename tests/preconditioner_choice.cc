@@ -51,7 +51,8 @@ main(int argc, char **argv)
       {
         const std::string directory =
           "output-choice-" + std::to_string(int(10 * tau_c_h));
-        run(bar_prm(2,
+        run(tight_steps() +
+            bar_prm(2,
                     "N-CS++",
                     cells,
                     tau_c_h * h,
@@ -78,7 +79,8 @@ main(int argc, char **argv)
     std::vector<Statistics> runs;
     for (const std::string preconditioner : {"Jacobi", "AMG"})
       runs.push_back(
-        run(bar_prm(2,
+        run(tight_steps() +
+            bar_prm(2,
                     "N-CS++",
                     cells,
                     tau,
@@ -109,18 +111,19 @@ main(int argc, char **argv)
     for (const unsigned int cells : {40u, 80u, 160u, 320u})
       {
         const double     tau = 0.5 / cells;
-        const Statistics s   = run(bar_prm(2,
-                                         "N-CS++",
-                                         cells,
-                                         tau,
-                                         0.4,
-                                         "subsection Postprocess\n"
-                                           "  subsection Error energy norm\n"
-                                           "    set Interval = output times\n"
-                                           "  end\nend\n"));
-        const auto       cg  = s.column("linear_iterations"),
-                   active    = s.column("active_nodes");
-        double most          = 0.;
+        const Statistics s =
+          run(tight_steps() + bar_prm(2,
+                                      "N-CS++",
+                                      cells,
+                                      tau,
+                                      0.4,
+                                      "subsection Postprocess\n"
+                                      "  subsection Error energy norm\n"
+                                      "    set Interval = output times\n"
+                                      "  end\nend\n"));
+        const auto cg     = s.column("linear_iterations"),
+                   active = s.column("active_nodes");
+        double most       = 0.;
         for (unsigned int i = 0; i < cg.size(); ++i)
           if (active[i] > 0)
             most = std::max(most, cg[i]);

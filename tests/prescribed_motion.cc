@@ -65,7 +65,8 @@ main(int argc, char **argv)
     {
       const bool       adapts = scheme == "adaptive";
       const Statistics s =
-        run(prm(adapts ? "short.msh" : "bar.msh",
+        run(tight_steps() +
+            prm(adapts ? "short.msh" : "bar.msh",
                 adapts ? "    set Dirichlet tags = 12: x\n"
                          "    set Prescribed displacements = 12: "
                          "v*t*(1 + 3*y^2), 0\n"
@@ -146,9 +147,11 @@ main(int argc, char **argv)
                           directory.size(),
                           "results-motion-" + run_name + "\n");
     };
-    const Statistics full = run(checkpointed("full", "0.75", false));
-    run(checkpointed("split", "0.375", false));
-    const Statistics resumed       = run(checkpointed("split", "0.75", true));
+    const Statistics full =
+      run(tight_steps() + checkpointed("full", "0.75", false));
+    run(tight_steps() + checkpointed("split", "0.375", false));
+    const Statistics resumed =
+      run(tight_steps() + checkpointed("split", "0.75", true));
     const auto [difference, worst] = statistics_difference(full, resumed);
     log() << "resumed at t = 0.375 s: the statistics agree to 1e-10: "
           << check(difference <= 1e-10 && full.has_column("work_prescribed") &&
@@ -170,8 +173,9 @@ main(int argc, char **argv)
                  9,
                  "= " + std::string(DYNCONTACT_PRM_DIR) + "/meshes/");
     const Statistics s =
-      run(text + "set Output directory = results-punch\n"
-                 "subsection Output\n  set Write vtu = false\nend\n");
+      run(tight_steps() + text +
+          "set Output directory = results-punch\n"
+          "subsection Output\n  set Write vtu = false\nend\n");
     const auto time           = s.column("time"),
                support        = s.column("prescribed_force_y");
     const auto   contact      = s.column("contact_force");
@@ -202,7 +206,8 @@ main(int argc, char **argv)
   write_block_msh("column.msh", {{0, 1, 0, 2, 4, 8, 1, 10, 11, 12, 13}});
   {
     const Statistics s =
-      run(prm("column.msh",
+      run(tight_steps() +
+          prm("column.msh",
               "    set Dirichlet tags = 10: y, 11: y, 12: x, 13: x\n"
               "    set Prescribed displacements = 11: 0, -0.005*t\n",
               "  set Scheme = static\n  set End time = 2\n",
@@ -285,7 +290,8 @@ main(int argc, char **argv)
   // after t = 0
   {
     const Statistics s =
-      run(prm("bar.msh",
+      run(tight_steps() +
+          prm("bar.msh",
               "    set Dirichlet tags = 12: x\n"
               "    set Prescribed displacements = 12: 0.01*t^1.5, 0\n",
               dynamic,

@@ -38,7 +38,8 @@ main(int argc, char **argv)
       std::string message;
       try
         {
-          run(bar_prm(2, "N-CS++", 10, 0.025, 0.1, triangulation("serial")));
+          run(tight_steps() +
+              bar_prm(2, "N-CS++", 10, 0.025, 0.1, triangulation("serial")));
         }
       catch (const std::exception &e)
         {
@@ -106,11 +107,12 @@ main(int argc, char **argv)
         Case{"3D bar, p = 1", bar_3d},
         Case{"bar, p = 2, p-multigrid, contact zone", multigrid}})
     {
-      const Statistics distributed =
-        run(c.prm + "set Output directory = results-distributed\n");
-      const Statistics serial = run(c.prm + triangulation("serial") +
-                                    "set Output directory = results-serial\n");
-      const bool       same_meshes =
+      const Statistics distributed = run(
+        tight_steps() + c.prm + "set Output directory = results-distributed\n");
+      const Statistics serial =
+        run(tight_steps() + c.prm + triangulation("serial") +
+            "set Output directory = results-serial\n");
+      const bool same_meshes =
         distributed.column("cells") == serial.column("cells") &&
         distributed.column("dofs") == serial.column("dofs");
       const auto cells      = serial.column("cells");
@@ -154,10 +156,11 @@ main(int argc, char **argv)
            "\n" + "subsection Checkpointing\n  set Interval in steps = 102\n" +
            "  set Resume = " + (resume ? "true" : "false") + "\nend\n";
   };
-  const Statistics full = run(checkpointed("full", 1., false));
-  run(checkpointed("split", 0.6375, false));
-  const Statistics resumed    = run(checkpointed("split", 1., true));
-  const auto       comparison = compare_solvers(full, resumed);
+  const Statistics full = run(tight_steps() + checkpointed("full", 1., false));
+  run(tight_steps() + checkpointed("split", 0.6375, false));
+  const Statistics resumed =
+    run(tight_steps() + checkpointed("split", 1., true));
+  const auto comparison = compare_solvers(full, resumed);
   std::cout << "resumed: largest difference " << comparison.difference.first
             << " in " << comparison.difference.second << std::endl;
   log() << "serial, stopped at step 102 and resumed: the same meshes: "
@@ -168,7 +171,8 @@ main(int argc, char **argv)
   std::string message;
   try
     {
-      run(bar_prm(2, "N-CS++", 40, 1. / 160., 1., recovery_two_bars_prm()) +
+      run(tight_steps() +
+          bar_prm(2, "N-CS++", 40, 1. / 160., 1., recovery_two_bars_prm()) +
           "set Output directory = results-split\n" +
           "subsection Checkpointing\n  set Resume = true\nend\n");
     }

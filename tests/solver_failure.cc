@@ -45,6 +45,8 @@ main(int argc, char **argv)
       << "\nend\n"
       << "subsection Contact solver\n  set Maximum active-set iterations = "
       << iterations << "\nend\n"
+      // (the resumed run compared to 1e-10)
+      << testing::tight_steps()
       << "subsection Checkpointing\n  set Resume = "
       << (resume ? "true" : "false") << "\nend\n"
       << "subsection Output\n  set Write vtu = false\nend\n";

@@ -32,9 +32,9 @@ namespace
   {
     const std::string jacobi    = "subsection Contact solver\n"
                                   "  set Preconditioner = Jacobi\nend\n";
-    const Statistics  assembled = run(prm + jacobi);
+    const Statistics  assembled = run(tight_steps() + prm + jacobi);
     const Statistics  matrix_free =
-      run(prm + jacobi +
+      run(tight_steps() + prm + jacobi +
           "subsection Contact solver\n  set Step matrix = matrix-free\nend\n");
     const SolverComparison c          = compare_solvers(assembled, matrix_free);
     const auto            &difference = c.difference;
@@ -60,9 +60,11 @@ main(int argc, char **argv)
                               "  set Poisson's ratio = 0.3\n"
                               "  set Viscous shear modulus = 0.002\n"
                               "  set Viscous Lame parameter = 0.001\nend\n";
+  // (tau = 1/81 s: with 1/80 s the bar touches the wall exactly at the end
+  // of step 8, where round-off decides whether N-CS's predictor is active)
   for (const std::string scheme : {"N-CI", "N-CS", "N-CS++"})
     compare("2D bar, Q1, viscous, " + scheme,
-            bar_prm(2, scheme, 40, 1. / 80., 0.5, viscous));
+            bar_prm(2, scheme, 40, 1. / 81., 0.5, viscous));
 
   for (const unsigned int degree : {1, 2, 3})
     for (const std::string mass : {"lumped", "consistent"})

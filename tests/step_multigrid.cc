@@ -30,7 +30,8 @@ namespace
   compare(const std::string &name, const std::string &prm)
   {
     const SolverComparison c =
-      compare_solvers(run(prm + jacobi), run(prm + multigrid));
+      compare_solvers(run(tight_steps() + prm + jacobi),
+                      run(tight_steps() + prm + multigrid));
     const double tolerance = 1e-7;
     log() << name << ": statistics agree to " << fmt(tolerance, 1) << ": "
           << check(c.difference.first <= tolerance)

@@ -124,6 +124,17 @@ namespace testing
     return s.str();
   }
 
+  /// Entries for the tests that compare two runs (another preconditioner,
+  /// rank count, triangulation, a rotated or resumed run) or check a
+  /// conservation law closer than the default Step solver tolerance (1e-7
+  /// of each step's increment) keeps them: 1e-12.
+  inline std::string
+  tight_steps()
+  {
+    return "subsection Contact solver\n"
+           "  set Step solver tolerance = 1e-12\nend\n";
+  }
+
   /// "subsection Scene" choosing the scene @p name, with @p entries (lines
   /// "set ... = ...") in the scene's own subsection (its name with a
   /// capital first letter).

@@ -73,11 +73,43 @@ namespace dyncontact
 
 
 
+  void
+  ActiveSetSolver::correct_along_increment(const Condensation &homogeneous,
+                                           const VectorType   &b,
+                                           VectorType         &x,
+                                           Scratch            &scratch) const
+  {
+    // x = x_o + alpha y, y = x - x_o, alpha minimising 1/2 x^T H x - b^T x
+    // on that line: the residual b - H x is then orthogonal to x - x_o, so
+    // that it does no work on the step's increment (the energy identity of
+    // the step holds whatever CG's tolerance; doc/algorithms.md, "The
+    // linear solver's tolerance"). One product with H.
+    const VectorType &x_origin = scratch.x_origin;
+    VectorType       &y = scratch.direction, &Hy = scratch.residual;
+    y = x;
+    y -= x_origin;
+    vmult_condensed(homogeneous, Hy, y);
+    const double yHy = y * Hy;
+    if (!(yHy > 0.))
+      return;
+    // (y^T b - y^T H x_o) / y^T H y, with y^T H x_o = (H y)^T x_o
+    // the work of the residual on the increment is (alpha - 1) y^T H y, and
+    // y^T H y is at most about 4 tau^2 E (E the energy): a correction below
+    // 1e-12 is left out, which keeps a rigid motion (where CG's start is
+    // the solution up to round-off) exact
+    const double alpha = (y * b - Hy * x_origin) / yHy;
+    if (std::abs(alpha - 1.) > 1e-12)
+      x.add(alpha - 1., y);
+  }
+
+
+
   bool
   ActiveSetSolver::solve_on_active_set(const std::vector<char> &active,
                                        const bool               any_active,
                                        const VectorType        &r,
                                        const double             r_norm,
+                                       const VectorType        *origin,
                                        VectorType              &v,
                                        Result                  &result,
                                        Scratch                 &scratch) const
@@ -104,10 +136,26 @@ namespace dyncontact
     x = v;
     zero_constrained(homogeneous, x);
 
-    const double tolerance =
-      std::max(parameters.linear_tolerance * std::max(b.l2_norm(), r_norm),
-               1e-300);
-    SolverControl        control(parameters.max_linear_iterations, tolerance);
+    // CG's tolerance: of a time step, relative to the step's increment
+    // from its origin (Step solver tolerance's documentation), estimated
+    // by |D (x - x_origin)| (D = diag(H)) or the start's residual, the
+    // larger; without an origin, relative to the right-hand side
+    double scale = std::max(b.l2_norm(), r_norm);
+    if (origin != nullptr)
+      {
+        VectorType &x_origin = scratch.x_origin, &increment = scratch.direction;
+        x_origin = *origin;
+        zero_constrained(homogeneous, x_origin);
+        increment = x;
+        increment -= x_origin;
+        increment.scale(diagonal);
+        scale = increment.l2_norm();
+      }
+    const double tolerance = origin != nullptr ? parameters.step_tolerance :
+                                                 parameters.linear_tolerance;
+    ReductionControl control(parameters.max_linear_iterations,
+                             std::max(tolerance * scale, 1e-300),
+                             origin != nullptr ? tolerance : 0.);
     SolverCG<VectorType> cg(control);
 
     struct Operator
@@ -146,6 +194,8 @@ namespace dyncontact
       }
     result.linear_iterations += control.last_step();
 
+    if (origin != nullptr)
+      correct_along_increment(homogeneous, b, x, scratch);
     v = x;
     distribute_inhomogeneous(constraints, v);
     return true;
@@ -273,7 +323,8 @@ namespace dyncontact
   ActiveSetSolver::solve(const VectorType    &r,
                          VectorType          &v,
                          std::vector<char>   &active,
-                         std::vector<double> &multipliers) const
+                         std::vector<double> &multipliers,
+                         const VectorType    *origin) const
   {
     Assert(H != nullptr || H_operator || diagonal.size() > 0,
            ExcInternalError());
@@ -286,8 +337,8 @@ namespace dyncontact
     Result result;
     // the local part of every active set visited so far (to detect cycling)
     std::vector<std::vector<char>> visited;
-    const double                   r_norm = r.l2_norm();
     Scratch                        scratch(r);
+    const double                   r_norm = r.l2_norm();
 
     for (result.iterations = 1;; ++result.iterations)
       {
@@ -297,7 +348,7 @@ namespace dyncontact
             std::find(active.begin(), active.end(), 1) != active.end() ? 1 : 0,
             comm) == 1;
         if (!solve_on_active_set(
-              active, any_active, r, r_norm, v, result, scratch))
+              active, any_active, r, r_norm, origin, v, result, scratch))
           return result;
         compute_multipliers(active, any_active, r, v, multipliers, scratch);
 

@@ -103,10 +103,32 @@ namespace dyncontact
       "Linear solver tolerance",
       "1e-12",
       Patterns::Double(0.),
-      "Relative tolerance of the CG solver for each condensed linear system: "
-      "it stops when the l2 norm of the residual is below this times the "
-      "larger of the norms of the right-hand side and of the condensed "
-      "right-hand side. Dimensionless, in (0, 1).");
+      "Relative tolerance of the CG solver for the static problem's "
+      "condensed linear systems: it stops when the l2 norm of the residual "
+      "is below this times the larger of the norms of the right-hand side "
+      "and of the condensed right-hand side. (The time steps of the dynamic "
+      "schemes use 'Step solver tolerance'.) Dimensionless, in (0, 1).");
+    prm.declare_entry(
+      "Step solver tolerance",
+      "1e-7",
+      Patterns::Double(0.),
+      "Relative tolerance of the CG solver in a time step of the dynamic "
+      "schemes (the displacement step, and the L2 projection with a "
+      "consistent mass): CG stops when the l2 norm of the residual is below "
+      "this times the step's increment from its origin (the last step's "
+      "displacement; for the L2 projection the new one), measured as "
+      "|D (x - origin)| with D the matrix's diagonal, or times the start's "
+      "residual if that is larger. The solution is then moved along the "
+      "line from the origin to where its residual is orthogonal to the "
+      "increment (one more product with the matrix), so that the residual "
+      "does no work on the step: the energy identity of Theorem 3.2 holds to "
+      "round-off whatever this tolerance, and the energy monitor's "
+      "tolerance is 1e-2 times it, within [1e-9, 1e-4]. Momentum and the "
+      "agreement of two runs that differ by round-off (one rank against "
+      "two, a resumed run, another preconditioner) hold to about this "
+      "tolerance: lower it (1e-12) to check them closer. 1e-7: about 5 CG "
+      "iterations per step for linear elements at tau = h/(2c) (doc/"
+      "running.md, \"Contact solver\"). Dimensionless, in (0, 1).");
     prm.declare_entry("Maximum linear iterations",
                       "2000",
                       Patterns::Integer(1),
@@ -200,6 +222,7 @@ namespace dyncontact
     prm.enter_subsection("Contact solver");
     max_iterations        = prm.get_integer("Maximum active-set iterations");
     linear_tolerance      = prm.get_double("Linear solver tolerance");
+    step_tolerance        = prm.get_double("Step solver tolerance");
     max_linear_iterations = prm.get_integer("Maximum linear iterations");
     amg_rotations = (prm.get("AMG near null space") == "rigid body motions");
     amg_smoothed_prolongator = (prm.get("AMG prolongator") == "smoothed");
@@ -229,6 +252,10 @@ namespace dyncontact
                 ExcMessage("Contact solver/Linear solver tolerance must lie in "
                            "(0, 1); got " +
                            Utilities::to_string(linear_tolerance) + "."));
+    AssertThrow(step_tolerance > 0. && step_tolerance < 1.,
+                ExcMessage("Contact solver/Step solver tolerance must lie in "
+                           "(0, 1); got " +
+                           Utilities::to_string(step_tolerance) + "."));
   }
 
 

@@ -13,10 +13,10 @@
 //
 // The balance monitor: energy_balance = E + W_visc (+ W_num) - E(0) minus the
 // energy
-// changes of mesh transfers, which Theorem 3.2 keeps <= 0 up to the linear
-// solver's tolerance. A step that raises it by more than
-// 1e3 * Linear solver tolerance (but within [1e-9, 1e-4]) times the run's
-// energy scale
+// changes of mesh transfers, which Theorem 3.2 keeps <= 0 (the step's
+// residual does no work on its increment: ActiveSetSolver's line search).
+// A step that raises it by more than 1e-2 * Step solver tolerance (but
+// within [1e-9, 1e-4]) times the run's energy scale
 // gets a warning with the step, the size and the remedy.
 
 #include <dyncontact/discretization/semi_discrete_system.h>
@@ -201,9 +201,10 @@ namespace dyncontact
                 << balance - previous_balance << " J ("
                 << 100. * (balance - previous_balance) / scale
                 << "% of the energy), which Theorem 3.2 excludes. The "
-                   "linear solver stops too early for this problem (e.g. a "
-                   "viscosity that dominates the step matrix): lower "
-                   "'Contact solver/Linear solver tolerance'."
+                   "linear solver stops too early for this problem (the "
+                   "work of contact forces on moving obstacles and of "
+                   "prescribed displacements is only as accurate as it): "
+                   "lower 'Contact solver/Step solver tolerance'."
                 << (curved_obstacle_moves() ?
                       " Or: a curved rigid obstacle moves, whose constraint "
                       "is linearised at each node's reference position; "

@@ -62,7 +62,7 @@ namespace dyncontact
       w.add(ops.tau(), udot);
       ops.rhs(w, u, r);
       VectorType u_new(w);
-      ops.solve_displacement(r, u_new, report);
+      ops.solve_displacement(r, u_new, report, &u);
       if (ops.obstacles_move())
         report.obstacle_work +=
           obstacle_work(report.multipliers, change, report.force_factor);
@@ -99,7 +99,7 @@ namespace dyncontact
         change = gap_change(ops, ops.step_end(), ops.step_end() + tau);
       VectorType w(x), projected(x);
       w.add(tau, v);
-      ops.project(w, projected, report);
+      ops.project(w, projected, report, &x);
       if (ops.obstacles_move())
         {
           // (the kinetic energy's change: 1/2 |P(w) - x|_M^2 / tau^2 ...)
@@ -143,14 +143,14 @@ namespace dyncontact
         change = gap_change(ops, ops.step_start(), ops.step_end());
       VectorType w(u), u_pred(u), r(u);
       w.add(tau, udot);
-      ops.project(w, u_pred, report);
+      ops.project(w, u_pred, report, &u);
       VectorType correction(u_pred);
       correction -= w;
       report.velocity_correction = ops.mass_norm(correction) / tau;
       // u^{n+1} = argmin_K 1/2 v^T S v - r(u_pred)^T v
       ops.rhs(u_pred, u, r);
       VectorType u_new(u_pred);
-      ops.solve_displacement(r, u_new, report);
+      ops.solve_displacement(r, u_new, report, &u);
       if (ops.obstacles_move())
         // (the displacement step's share only: the predictor moves u)
         report.obstacle_work +=

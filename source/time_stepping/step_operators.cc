@@ -196,13 +196,15 @@ namespace dyncontact
   void
   StepOperators::solve_displacement(const VectorType &r,
                                     VectorType       &v,
-                                    StepReport       &report)
+                                    StepReport       &report,
+                                    const VectorType *origin)
   {
     const PrescribedMotion *prescribed = system.prescribed;
     if (prescribed == nullptr)
       {
         report.displacement_solve =
-          current->solver->solve(r, v, displacement_active, report.multipliers);
+          current->solver->solve(
+          r, v, displacement_active, report.multipliers, origin);
         report.active = displacement_active;
         return;
       }
@@ -214,10 +216,18 @@ namespace dyncontact
     current->S_product(S_x, G);
     r_free -= S_x;
     v -= G;
-    report.displacement_solve = current->solver->solve(r_free,
-                                                       v,
-                                                       displacement_active,
-                                                       report.multipliers);
+    VectorType origin_free;
+    if (origin != nullptr)
+      {
+        origin_free = *origin;
+        origin_free -= G;
+      }
+    report.displacement_solve =
+      current->solver->solve(r_free,
+                             v,
+                             displacement_active,
+                             report.multipliers,
+                             origin != nullptr ? &origin_free : nullptr);
     v += G;
     report.active = displacement_active;
     // the force of the prescribed DoFs on the body: the residual there,
@@ -232,7 +242,10 @@ namespace dyncontact
 
 
   void
-  StepOperators::project(const VectorType &w, VectorType &v, StepReport &report)
+  StepOperators::project(const VectorType &w,
+                         VectorType       &v,
+                         StepReport       &report,
+                         const VectorType *origin)
   {
     // Dirichlet data that move: the projection keeps w there (the lumped
     // M couples no DoFs) and projects the rest
@@ -245,8 +258,15 @@ namespace dyncontact
     if (system.prescribed != nullptr)
       v -= W;
     system.mass_vmult(r, v);
+    VectorType origin_free;
+    if (origin != nullptr && system.prescribed != nullptr)
+      {
+        origin_free = *origin;
+        origin_free -= W;
+        origin = &origin_free;
+      }
     report.projection_solve =
-      projection_solver.solve(r, v, projection_active, multipliers);
+      projection_solver.solve(r, v, projection_active, multipliers, origin);
     if (system.prescribed != nullptr)
       v += W;
     report.projection_active = projection_active;

@@ -136,11 +136,17 @@ namespace dyncontact
     /// v = argmin_{Cv<=g} 1/2 v^T S v - r^T v (v is the initial guess);
     /// fills the report's displacement solve, active set and multipliers.
     void
-    solve_displacement(const VectorType &r, VectorType &v, StepReport &report);
+    solve_displacement(const VectorType &r,
+                       VectorType       &v,
+                       StepReport       &report,
+                       const VectorType *origin = nullptr);
 
     /// v = P(w) (the initial guess is w); fills the report's projection.
     void
-    project(const VectorType &w, VectorType &v, StepReport &report);
+    project(const VectorType &w,
+            VectorType       &v,
+            StepReport       &report,
+            const VectorType *origin = nullptr);
 
     /// sqrt(x^T M x).
     double
