@@ -95,6 +95,8 @@ main(int argc, char **argv)
      "subsection Checkpointing\n  set Resume = true\nend\n"},
     {"solver_tolerance_one",
      "subsection Contact solver\n  set Linear solver tolerance = 1\nend\n"},
+    {"step_solver_tolerance_zero",
+     "subsection Contact solver\n  set Step solver tolerance = 0\nend\n"},
     {"matrix_free_step_with_amg",
      "subsection Contact solver\n  set Step matrix = matrix-free\n"
      "  set Preconditioner = AMG\nend\n"},

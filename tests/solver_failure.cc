@@ -44,10 +44,10 @@ main(int argc, char **argv)
       << "  set Time step adaptation = " << (adapt ? "true" : "false")
       << "\nend\n"
       << "subsection Contact solver\n  set Maximum active-set iterations = "
-      << iterations << "\nend\n"
+      << iterations
+      << "\nend\n"
       // (the resumed run compared to 1e-10)
-      << testing::tight_steps()
-      << "subsection Checkpointing\n  set Resume = "
+      << testing::tight_steps() << "subsection Checkpointing\n  set Resume = "
       << (resume ? "true" : "false") << "\nend\n"
       << "subsection Output\n  set Write vtu = false\nend\n";
     return s.str();

@@ -151,8 +151,8 @@ namespace dyncontact
         increment.scale(diagonal);
         scale = increment.l2_norm();
       }
-    const double tolerance = origin != nullptr ? parameters.step_tolerance :
-                                                 parameters.linear_tolerance;
+    const double     tolerance = origin != nullptr ? parameters.step_tolerance :
+                                                     parameters.linear_tolerance;
     ReductionControl control(parameters.max_linear_iterations,
                              std::max(tolerance * scale, 1e-300),
                              origin != nullptr ? tolerance : 0.);
@@ -337,7 +337,7 @@ namespace dyncontact
     Result result;
     // the local part of every active set visited so far (to detect cycling)
     std::vector<std::vector<char>> visited;
-    Scratch                        scratch(r);
+    Scratch                        scratch(r, origin != nullptr);
     const double                   r_norm = r.l2_norm();
 
     for (result.iterations = 1;; ++result.iterations)

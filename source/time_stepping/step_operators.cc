@@ -202,8 +202,7 @@ namespace dyncontact
     const PrescribedMotion *prescribed = system.prescribed;
     if (prescribed == nullptr)
       {
-        report.displacement_solve =
-          current->solver->solve(
+        report.displacement_solve = current->solver->solve(
           r, v, displacement_active, report.multipliers, origin);
         report.active = displacement_active;
         return;

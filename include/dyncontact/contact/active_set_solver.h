@@ -55,8 +55,8 @@ namespace dyncontact
   public:
     struct Parameters
     {
-      unsigned int max_iterations        = 50;
-      double       linear_tolerance      = 1e-12;
+      unsigned int max_iterations   = 50;
+      double       linear_tolerance = 1e-12;
       /// CG's tolerance in a time step, relative to the step's increment
       double       step_tolerance        = 1e-7;
       unsigned int max_linear_iterations = 2000;
@@ -376,14 +376,20 @@ namespace dyncontact
     /// The vectors of the active-set iteration, made once per solve().
     struct Scratch
     {
-      explicit Scratch(const VectorType &r)
+      /// (@p with_origin: also the vectors of the correction along the
+      /// increment)
+      Scratch(const VectorType &r, const bool with_origin)
         : k(r)
         , b(r)
         , x(r)
         , residual(r)
-        , x_origin(r)
-        , direction(r)
-      {}
+      {
+        if (with_origin)
+          {
+            x_origin.reinit(r);
+            direction.reinit(r);
+          }
+      }
       VectorType k, b, x, residual;
       /// the origin's condensed part and a direction (origin given)
       VectorType x_origin, direction;
