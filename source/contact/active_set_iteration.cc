@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace dyncontact
@@ -97,8 +98,14 @@ namespace dyncontact
     // y^T H y is at most about 4 tau^2 E (E the energy): a correction below
     // 1e-12 is left out, which keeps a rigid motion (where CG's start is
     // the solution up to round-off) exact
-    const double alpha = (y * b - Hy * x_origin) / yHy;
-    if (std::abs(alpha - 1.) > 1e-12)
+    // (y^T b and (H y)^T x_o are of the size of the displacement, their
+    // difference of the increment's: below the round-off of that
+    // difference alpha - 1 is noise, which a long free flight would add up)
+    const double yb = y * b, Hyxo = Hy * x_origin;
+    const double alpha = (yb - Hyxo) / yHy;
+    const double noise = 64. * std::numeric_limits<double>::epsilon() *
+                         (std::abs(yb) + std::abs(Hyxo)) / yHy;
+    if (std::abs(alpha - 1.) > std::max(1e-12, noise))
       x.add(alpha - 1., y);
   }
 
@@ -136,26 +143,21 @@ namespace dyncontact
     x = v;
     zero_constrained(homogeneous, x);
 
-    // CG's tolerance: of a time step, relative to the step's increment
-    // from its origin (Step solver tolerance's documentation), estimated
-    // by |D (x - x_origin)| (D = diag(H)) or the start's residual, the
-    // larger; without an origin, relative to the right-hand side
-    double scale = std::max(b.l2_norm(), r_norm);
+    // CG's tolerance: in a time step, relative to the start's residual
+    // (the step's correction beyond CG's start; a floor of 1e-14 of the
+    // right-hand side, round-off); without an origin, relative to the
+    // right-hand side (Step and Linear solver tolerance's documentation)
+    const double rhs_norm = std::max(b.l2_norm(), r_norm);
     if (origin != nullptr)
       {
-        VectorType &x_origin = scratch.x_origin, &increment = scratch.direction;
-        x_origin = *origin;
-        zero_constrained(homogeneous, x_origin);
-        increment = x;
-        increment -= x_origin;
-        increment.scale(diagonal);
-        scale = increment.l2_norm();
+        scratch.x_origin = *origin;
+        zero_constrained(homogeneous, scratch.x_origin);
       }
-    const double     tolerance = origin != nullptr ? parameters.step_tolerance :
-                                                     parameters.linear_tolerance;
-    ReductionControl control(parameters.max_linear_iterations,
-                             std::max(tolerance * scale, 1e-300),
-                             origin != nullptr ? tolerance : 0.);
+    const double     step = origin != nullptr;
+    ReductionControl control(
+      parameters.max_linear_iterations,
+      std::max((step ? 1e-14 : parameters.linear_tolerance) * rhs_norm, 1e-300),
+      step ? parameters.step_tolerance : 0.);
     SolverCG<VectorType> cg(control);
 
     struct Operator

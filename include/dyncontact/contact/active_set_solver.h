@@ -58,7 +58,7 @@ namespace dyncontact
       unsigned int max_iterations   = 50;
       double       linear_tolerance = 1e-12;
       /// CG's tolerance in a time step, relative to the step's increment
-      double       step_tolerance        = 1e-7;
+      double       step_tolerance        = 1e-6;
       unsigned int max_linear_iterations = 2000;
       /// AMG's near-null space: the rigid translations only, or also the
       /// infinitesimal rotations.
