@@ -93,14 +93,13 @@ namespace dyncontact
     const double yHy = y * Hy;
     if (!(yHy > 0.))
       return;
-    // (y^T b - y^T H x_o) / y^T H y, with y^T H x_o = (H y)^T x_o
-    // the work of the residual on the increment is (alpha - 1) y^T H y, and
-    // y^T H y is at most about 4 tau^2 E (E the energy): a correction below
-    // 1e-12 is left out, which keeps a rigid motion (where CG's start is
-    // the solution up to round-off) exact
-    // (y^T b and (H y)^T x_o are of the size of the displacement, their
-    // difference of the increment's: below the round-off of that
-    // difference alpha - 1 is noise, which a long free flight would add up)
+    // alpha = (y^T b - y^T H x_o) / y^T H y, with y^T H x_o = (H y)^T x_o.
+    // The residual's work on the increment is (alpha - 1) y^T H y, at most
+    // about 4 (alpha - 1) E: below 1e-12 it is left out, and so is an
+    // alpha - 1 below the round-off of the difference it is computed from
+    // (y^T b and (H y)^T x_o are of the size of the displacement): such
+    // noise would add up over a long free flight, where CG's start is the
+    // solution up to round-off.
     const double yb = y * b, Hyxo = Hy * x_origin;
     const double alpha = (yb - Hyxo) / yHy;
     const double noise = 64. * std::numeric_limits<double>::epsilon() *
@@ -153,7 +152,7 @@ namespace dyncontact
         scratch.x_origin = *origin;
         zero_constrained(homogeneous, scratch.x_origin);
       }
-    const double     step = origin != nullptr;
+    const bool       step = origin != nullptr;
     ReductionControl control(
       parameters.max_linear_iterations,
       std::max((step ? 1e-14 : parameters.linear_tolerance) * rhs_norm, 1e-300),

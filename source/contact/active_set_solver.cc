@@ -129,9 +129,10 @@ namespace dyncontact
       "another preconditioner), agree to about this tolerance times the "
       "velocity change: lower it (1e-12) to compare them closer (on "
       "prm/punch.prm the punch's force differs from that at 1e-12 by 6e-7 "
-      "of it at 1e-6, 9e-4 at 1e-3, 2e-2 at 1e-1). 1e-6: about 5 CG iterations per step for linear elements "
-      "at tau = h/(2c) (doc/results.md, \"CG iterations per time step\"). "
-      "Dimensionless, in (0, 1).");
+      "of it at 1e-6, 9e-4 at 1e-3, 2e-2 at 1e-1). 1e-6: about 5 CG "
+      "iterations per step for linear elements at tau = h/(2c) "
+      "(doc/results.md, \"CG iterations per time step\"). Dimensionless, "
+      "in (0, 1).");
     prm.declare_entry("Maximum linear iterations",
                       "2000",
                       Patterns::Integer(1),

@@ -16,6 +16,23 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// A solve's origin less the prescribed part @p shift (stored in
+    /// @p storage), as the solve's unknown is; nullptr without an origin.
+    const VectorType *
+    without(const VectorType *origin,
+            const VectorType &shift,
+            VectorType       &storage)
+    {
+      if (origin == nullptr)
+        return nullptr;
+      storage = *origin;
+      storage -= shift;
+      return &storage;
+    }
+  } // namespace
+
   StepOperators::StepOperators(const bool                is_static,
                                const double              numerical_dissipation,
                                const double              tau,
@@ -216,17 +233,12 @@ namespace dyncontact
     r_free -= S_x;
     v -= G;
     VectorType origin_free;
-    if (origin != nullptr)
-      {
-        origin_free = *origin;
-        origin_free -= G;
-      }
     report.displacement_solve =
       current->solver->solve(r_free,
                              v,
                              displacement_active,
                              report.multipliers,
-                             origin != nullptr ? &origin_free : nullptr);
+                             without(origin, G, origin_free));
     v += G;
     report.active = displacement_active;
     // the force of the prescribed DoFs on the body: the residual there,
@@ -258,12 +270,8 @@ namespace dyncontact
       v -= W;
     system.mass_vmult(r, v);
     VectorType origin_free;
-    if (origin != nullptr && system.prescribed != nullptr)
-      {
-        origin_free = *origin;
-        origin_free -= W;
-        origin = &origin_free;
-      }
+    if (system.prescribed != nullptr)
+      origin = without(origin, W, origin_free);
     report.projection_solve =
       projection_solver.solve(r, v, projection_active, multipliers, origin);
     if (system.prescribed != nullptr)

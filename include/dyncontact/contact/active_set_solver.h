@@ -57,7 +57,7 @@ namespace dyncontact
     {
       unsigned int max_iterations   = 50;
       double       linear_tolerance = 1e-12;
-      /// CG's tolerance in a time step, relative to the step's increment
+      /// CG's tolerance in a time step, relative to its start's residual
       double       step_tolerance        = 1e-6;
       unsigned int max_linear_iterations = 2000;
       /// AMG's near-null space: the rigid translations only, or also the
@@ -102,14 +102,13 @@ namespace dyncontact
       /// [1e-9, 1e-4]. (A time step's residual does no work on its
       /// increment, whatever the tolerance: what remains of it in the
       /// balance is the work of the multipliers on moving obstacles and
-      /// prescribed displacements.)
+      /// prescribed displacements, and a consistent mass's L2 projection.)
       double
       energy_tolerance() const
       {
         return std::min(1e-4, std::max(1e-9, 1e-2 * step_tolerance));
       }
     };
-
 
     /// How a solve ended. A failure is reported, never thrown: the time
     /// step control decides what to do (retry with a smaller step, or stop
