@@ -1042,7 +1042,9 @@ main(int argc, char **argv)
       << "subsection Mesh refinement\n  set Refine fraction = 0.3\n"
       << "  set Initial contact refinements = 2\nend\n"
       << "subsection Output\n  set Compression = best\nend\n"
-      << "subsection Reference solution\n  set Interval = 0.2\nend\n";
+      << "subsection Reference solution\n  set Interval = 0.2\nend\n"
+      << "subsection Time integration\n  set Consistent mass fraction = "
+         "0.6\nend\n";
     const Outcome unread = run_program("unread.prm");
     const auto warned = [&](const std::string &entry, const std::string &why) {
       return unread.text.find(entry +
@@ -1068,6 +1070,9 @@ main(int argc, char **argv)
           << "), no reference states ("
           << check(warned("Reference solution/Interval",
                           "neither Write states nor Compare with states"))
+          << "), a blend of masses that are lumped ("
+          << check(warned("Time integration/Consistent mass fraction",
+                          "only Mass matrix = blended reads it"))
           << "); the initial contact refinements that refine nothing ("
           << check(unread.text.find("Initial contact refinements = 2: no "
                                     "cell was refined") != std::string::npos)
@@ -1080,7 +1085,7 @@ main(int argc, char **argv)
                  for (auto at = unread.text.find(line); at != std::string::npos;
                       at      = unread.text.find(line, at + 1))
                    ++n;
-                 return n == 5;
+                 return n == 6;
                }())
           << ")\n";
   }

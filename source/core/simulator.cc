@@ -52,6 +52,8 @@ namespace dyncontact
     typename DiscreteProblem<dim>::Parameters discretization;
     discretization.system.degree      = parameters.degree;
     discretization.system.lumped_mass = time_integration.lumped_mass;
+    discretization.system.consistent_mass_fraction =
+      time_integration.consistent_mass_fraction;
     discretization.numerical_dissipation =
       time_integration.numerical_dissipation;
     discretization.serial_triangulation = parameters.serial_triangulation;

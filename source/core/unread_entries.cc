@@ -27,6 +27,9 @@ namespace dyncontact
                             "time to compare with" :
                             "the '" + scene->name() +
                               "' scene has no exact solution");
+    if (!time_integration.blended_mass)
+      unread.emplace_back("Time integration/Consistent mass fraction",
+                          "only Mass matrix = blended reads it");
     for (const auto &entry : vtu_writer->unread_entries())
       unread.push_back(entry);
     for (const auto &entry : reference_states->unread_entries())

@@ -34,8 +34,10 @@ namespace dyncontact
       CellTerms(const Mapping<dim>  &mapping,
                 const FESystem<dim> &fe,
                 const FE_Q<dim>     &scalar_fe,
-                const bool           lumped_mass)
+                const bool           lumped_mass,
+                const double         consistent_fraction)
         : lumped_mass(lumped_mass)
+        , consistent_fraction(lumped_mass ? 0. : consistent_fraction)
         , quadrature(fe.degree + 1)
         // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes
         // the element mass matrix of FE_Q diagonal
@@ -60,14 +62,18 @@ namespace dyncontact
                              scalar_fe,
                              lumped_face_quadrature,
                              update_values | update_JxW_values)
+        , nodal_values(mapping,
+                       scalar_fe,
+                       QGaussLobatto<dim>(fe.degree + 1),
+                       update_values | update_JxW_values)
         , dofs_per_cell(fe.n_dofs_per_cell())
         , n_nodes(scalar_fe.n_dofs_per_cell())
         , scalar_mass(lumped_mass ? n_nodes : n_nodes * n_nodes)
         , scalar_load(n_nodes)
       {
-        if (lumped_mass)
+        if (lumped_mass || this->consistent_fraction < 1.)
           mass_diagonal.reinit(dofs_per_cell);
-        else
+        if (!lumped_mass)
           mass.reinit(dofs_per_cell, dofs_per_cell);
         load.reinit(dofs_per_cell);
         boundary_weights.reinit(dofs_per_cell);
@@ -90,6 +96,9 @@ namespace dyncontact
         boundary_weights = 0.;
         fe_values.reinit(cell);
         mass_values.reinit(cell);
+        const bool blended = !lumped_mass && consistent_fraction < 1.;
+        if (blended)
+          nodal_values.reinit(cell);
         bool positive = true;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           if (!(fe_values.JxW(q) > 0.))
@@ -100,7 +109,9 @@ namespace dyncontact
         const bool same_volume_terms =
           have_volume_terms && rho == volume_rho &&
           fe_values.get_cell_similarity() == CellSimilarity::translation &&
-          mass_values.get_cell_similarity() == CellSimilarity::translation;
+          mass_values.get_cell_similarity() == CellSimilarity::translation &&
+          (!blended ||
+           nodal_values.get_cell_similarity() == CellSimilarity::translation);
         if (!same_volume_terms)
           volume_terms(rho);
         have_volume_terms = true;
@@ -113,7 +124,8 @@ namespace dyncontact
         return positive;
       }
 
-      /// the element mass matrix, or (lumped) its diagonal
+      /// the element mass matrix, or (lumped) its diagonal; a blended
+      /// mass's lumped part (1 - beta) M_K (Gauss-Lobatto) in mass_diagonal
       FullMatrix<double> mass;
       Vector<double>     mass_diagonal;
       Vector<double>     load;
@@ -154,6 +166,24 @@ namespace dyncontact
               scalar_mass[k * n_nodes + l] +=
                 rho * mass_values.shape_value(k, q) *
                 mass_values.shape_value(l, q) * mass_values.JxW(q);
+        // blended: beta times this plus the lumped part, 1 - beta times
+        // the lumped diagonal (also kept in mass_diagonal)
+        if (consistent_fraction < 1.)
+          {
+            for (double &entry : scalar_mass)
+              entry *= consistent_fraction;
+            std::vector<double> lumped_part(n_nodes, 0.);
+            for (unsigned int q = 0; q < nodal_values.n_quadrature_points; ++q)
+              for (unsigned int k = 0; k < n_nodes; ++k)
+                lumped_part[k] += (1. - consistent_fraction) * rho *
+                                  nodal_values.shape_value(k, q) *
+                                  nodal_values.shape_value(k, q) *
+                                  nodal_values.JxW(q);
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              scalar_mass[k * n_nodes + k] += lumped_part[k];
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              mass_diagonal(i) = lumped_part[node[i]];
+          }
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
             if (component[i] == component[j])
@@ -191,7 +221,9 @@ namespace dyncontact
           }
       }
 
-      const bool                   lumped_mass;
+      const bool lumped_mass;
+      /// beta of a blended mass (1: consistent, 0 if lumped)
+      const double                 consistent_fraction;
       const QGauss<dim>            quadrature;
       const Quadrature<dim>        mass_quadrature;
       const QGauss<dim - 1>        face_quadrature;
@@ -200,8 +232,10 @@ namespace dyncontact
       FEValues<dim>                mass_values;
       FEFaceValues<dim>            face_values;
       FEFaceValues<dim>            lumped_face_values;
-      const unsigned int           dofs_per_cell;
-      const unsigned int           n_nodes;
+      /// Gauss-Lobatto values for a blended mass's lumped part
+      FEValues<dim>      nodal_values;
+      const unsigned int dofs_per_cell;
+      const unsigned int n_nodes;
       /// component and scalar shape function of each shape function
       std::vector<unsigned int> component, node;
       /// the scalar mass int phi_k phi_l (lumped: its diagonal) and load
@@ -334,7 +368,11 @@ namespace dyncontact
     const auto          contact_ids = parameters.multigrid_level ?
                                         std::vector<types::boundary_id>() :
                                         scene.all_contact_boundary_ids();
-    CellTerms<dim>      terms(mapping, fe, scalar_fe, parameters.lumped_mass);
+    CellTerms<dim>      terms(mapping,
+                         fe,
+                         scalar_fe,
+                         parameters.lumped_mass,
+                         parameters.consistent_mass_fraction);
     std::vector<double> bad_cell; // centre and body of an inverted cell
     const auto          note_bad_cell = [&bad_cell](const auto &cell) {
       if (!bad_cell.empty())
@@ -345,7 +383,7 @@ namespace dyncontact
     };
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     std::unique_ptr<OwnedAdder> lumped_mass_adder, load_adder, weight_adder;
-    if (parameters.lumped_mass)
+    if (parameters.lumped_mass || parameters.consistent_mass_fraction < 1.)
       lumped_mass_adder =
         std::make_unique<OwnedAdder>(lumped_mass_diagonal, locally_owned);
     if (!parameters.multigrid_level)
@@ -387,9 +425,9 @@ namespace dyncontact
           if (!positive)
             note_bad_cell(cell);
           cell->get_dof_indices(dof_indices);
-          if (parameters.lumped_mass)
+          if (lumped_mass_adder)
             lumped_mass_adder->add(dof_indices, terms.mass_diagonal);
-          else
+          if (mass_adder)
             mass_adder->add(dof_indices, terms.mass);
           if (!parameters.multigrid_level)
             {
@@ -398,9 +436,9 @@ namespace dyncontact
             }
         }
 
-    if (parameters.lumped_mass)
+    if (lumped_mass_adder)
       lumped_mass_diagonal.compress(VectorOperation::add);
-    else
+    if (mass_adder)
       mass_matrix.compress(VectorOperation::add);
     check_for_inverted_cells<dim>(bad_cell, comm);
     if (parameters.multigrid_level)

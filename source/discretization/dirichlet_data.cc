@@ -37,7 +37,7 @@ namespace dyncontact
                 ExcMessage("Prescribed displacements that move need 'Time "
                            "integration/Mass matrix = lumped' (the step "
                            "solves for the displacement beside them, which "
-                           "a consistent mass couples to them)."));
+                           "a consistent or blended mass couples to them)."));
     // the hanging nodes' lines before the Dirichlet data join them
     std::vector<
       std::pair<types::global_dof_index,

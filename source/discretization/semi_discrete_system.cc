@@ -151,7 +151,11 @@ namespace dyncontact
     else
       {
         reinit_matrix(mass_matrix);
-        lumped_mass_diagonal.clear();
+        // (a blended mass's lumped part, for the bound of Jacobi)
+        if (parameters.consistent_mass_fraction < 1.)
+          lumped_mass_diagonal.reinit(locally_owned, comm);
+        else
+          lumped_mass_diagonal.clear();
       }
     stiffness_product.reinit(nullptr);
     viscous = scene.is_viscous();
@@ -502,12 +506,30 @@ namespace dyncontact
 
 
   template <int dim>
+  std::string
+  SemiDiscreteSystem<dim>::mass_description() const
+  {
+    if (parameters.lumped_mass)
+      return "lumped";
+    if (parameters.consistent_mass_fraction == 1.)
+      return "consistent";
+    std::ostringstream text;
+    text << "blended (" << parameters.consistent_mass_fraction
+         << " consistent)";
+    return text.str();
+  }
+
+
+
+  template <int dim>
   SystemMatrices
   SemiDiscreteSystem<dim>::matrices() const
   {
     SystemMatrices system;
-    system.M         = parameters.lumped_mass ? nullptr : &mass_matrix;
-    system.M_lumped  = parameters.lumped_mass ? &lumped_mass_diagonal : nullptr;
+    system.M        = parameters.lumped_mass ? nullptr : &mass_matrix;
+    system.M_lumped = parameters.lumped_mass ? &lumped_mass_diagonal : nullptr;
+    system.M_lower =
+      lumped_mass_diagonal.size() > 0 ? &lumped_mass_diagonal : nullptr;
     system.A_product = &stiffness_product;
     if (viscous)
       system.B_vmult = [this](VectorType &y, const VectorType &x) {

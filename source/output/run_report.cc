@@ -63,8 +63,7 @@ namespace dyncontact
          << (system.is_viscous() ?
                "viscoelastic (Kelvin-Voigt, viscous form B)" :
                "elastic (no viscous form)")
-         << ", " << (system.matrices().lumped_mass() ? "lumped" : "consistent")
-         << " mass\n";
+         << ", " << system.mass_description() << " mass\n";
     // each body's material where they differ
     if (!scene.one_material())
       for (unsigned int b = 0; b < scene.n_bodies(); ++b)

@@ -31,6 +31,25 @@ namespace dyncontact
       storage -= shift;
       return &storage;
     }
+
+    /// max_i H_ii / D_ii for the diagonal @p H_diagonal of a matrix H >= M
+    /// and a diagonal D <= M (@p lower), the factor of the bound of H's
+    /// Jacobi-scaled condition number (ActiveSetSolver::set_matrix());
+    /// infinite without D (a consistent mass).
+    double
+    lower_mass_ratio(const VectorType &H_diagonal,
+                     const VectorType *lower,
+                     const MPI_Comm    comm)
+    {
+      if (lower == nullptr)
+        return std::numeric_limits<double>::infinity();
+      const double *H_ii = H_diagonal.begin(), *D_ii = lower->begin();
+      double        ratio = 1.;
+      for (unsigned int k = 0; k < H_diagonal.locally_owned_size(); ++k)
+        if (D_ii[k] > 0.)
+          ratio = std::max(ratio, H_ii[k] / D_ii[k]);
+      return Utilities::MPI::max(ratio, comm);
+    }
   } // namespace
 
   StepOperators::StepOperators(const bool                is_static,
@@ -63,7 +82,11 @@ namespace dyncontact
     if (system.lumped_mass())
       projection_solver.set_diagonal_matrix(*system.M_lumped);
     else
-      projection_solver.set_matrix(*system.M);
+      projection_solver.set_matrix(*system.M,
+                                   nullptr,
+                                   lower_mass_ratio(matrix_diagonal(*system.M),
+                                                    system.M_lower,
+                                                    comm));
   }
 
 
@@ -145,14 +168,12 @@ namespace dyncontact
           if (M_ii[k] > 0.)
             ratio = std::max(ratio, S_ii[k] / M_ii[k]);
         step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
-        // (the bound of S's Jacobi-scaled condition number needs a lumped
-        // mass)
+        // (the bound of S's Jacobi-scaled condition number needs a diagonal
+        // D <= M: a lumped mass, or a blended mass's lumped part)
         if (!matrix_free())
           solver.set_matrix(S,
                             nullptr,
-                            system.lumped_mass() ?
-                              step_matrix->inertia_ratio :
-                              std::numeric_limits<double>::infinity());
+                            lower_mass_ratio(S_diagonal, system.M_lower, comm));
       }
     return step_matrix;
   }

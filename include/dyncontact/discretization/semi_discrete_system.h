@@ -95,19 +95,19 @@ namespace dyncontact
    */
   struct SystemMatrices
   {
+    /// (M_lower: a diagonal D <= M: the lumped M, a blended M's lumped part)
     const MatrixType    *M         = nullptr;
     const VectorType    *M_lumped  = nullptr;
+    const VectorType    *M_lower   = nullptr;
     const CachedProduct *A_product = nullptr;
     Product              B_vmult;
-    /// matrix = a A + b B + m M, on the sparsity pattern of the
-    /// unconstrained operator (which the matrix is given).
+    /// matrix = a A + b B + m M, on the unconstrained operator's pattern.
     std::function<void(MatrixType &matrix, double a, double b, double m)>
       assemble_stiffness;
     /// y = (a A + b B) x in one pass over the cells, without a matrix.
     std::function<void(VectorType &y, const VectorType &x, double a, double b)>
       stiffness_combination_vmult;
-    /// d = the diagonal of a A + b B (the assembled matrix's), without a
-    /// matrix.
+    /// d = the diagonal of a A + b B (the assembled matrix's), matrix-free.
     std::function<void(VectorType &d, double a, double b)>
       stiffness_combination_diagonal;
     /// The preconditioner of a step matrix S = M + a A + b B applied by
@@ -179,6 +179,8 @@ namespace dyncontact
       unsigned int degree = 1;
       /// Time integration/Mass matrix = lumped (TimeIntegrationParameters).
       bool lumped_mass = true;
+      /// beta of a mass not lumped: beta M_K(Gauss) + (1-beta) M_K(nodal).
+      double consistent_mass_fraction = 1.;
       /// Whether matrices a A + b B + m M are assembled (Contact solver/Step
       /// matrix = assembled, or a static problem); else a lumped mass needs
       /// no sparsity pattern, and none is built.
@@ -260,6 +262,9 @@ namespace dyncontact
 
     SystemMatrices
     matrices() const;
+    /// Mass matrix: lumped, consistent or blended (the banner's words).
+    std::string
+    mass_description() const;
 
     const FESystem<dim> &
     get_fe() const
@@ -525,7 +530,7 @@ namespace dyncontact
     reinit_matrix(MatrixType &matrix) const;
     /// the moduli of each material id of the mesh
     std::map<types::material_id, Material> materials;
-    /// the consistent mass matrix, or (lumped) its diagonal
+    /// M if not lumped; the lumped M's diagonal, or a blended M's lumped part
     MatrixType           mass_matrix;
     VectorType           lumped_mass_diagonal;
     ElasticOperator<dim> elastic_operator;

@@ -23,8 +23,13 @@ namespace dyncontact
   {
     /// Scheme: one of the names of schemes().
     std::string scheme = "N-CS++";
-    /// Mass matrix = lumped (Gauss-Lobatto) or consistent.
+    /// Mass matrix = lumped (Gauss-Lobatto), else consistent or blended.
     bool lumped_mass = true;
+    /// The consistent part beta of a mass that is not lumped: 1 for Mass
+    /// matrix = consistent, Consistent mass fraction for blended.
+    double consistent_mass_fraction = 1.;
+    /// Mass matrix = blended.
+    bool blended_mass = false;
     /// Numerical dissipation theta (dimensionless, 0: the paper's schemes).
     double numerical_dissipation = 0.;
     /// End time T, in s.
