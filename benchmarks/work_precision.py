@@ -15,7 +15,10 @@ Scenes and what is measured (errors relative, except times and positions):
   run), the pressure overshoot max p / (rho c v0) - 1 and the ripple
   max |p / (rho c v0) - 1| over the middle half of the contact, [0.6, 1.6] s.
   Both bars also run the uniform meshes with Time integration/Numerical
-  dissipation = 0.05 (doc/algorithms.md), the dashed lines.
+  dissipation = 0.05 (doc/algorithms.md), the dashed lines, and for p = 1
+  with Mass matrix = blended (Consistent mass fraction 0.75 = 1/2 +
+  (c tau/h)^2, the dispersion-reduced mass), the dash-dotted lines, up to
+  twice the finest mesh's cells.
 - two bars: prm/two_bars.prm (H = 0.1 m) to T = 2.5 s, exact solution; the
   same measures, the position of the second bar; square cells, n/10 across
   the first bar and n/10 + 1 across the second (non-matching) for n along.
@@ -102,14 +105,16 @@ def scene_prm(base, scene, entries):
         scene, "".join("    set %s = %s\n" % e for e in entries))
 
 
-def mesh_prm(p, tau, global_refinements=None, adaptive=None, interval=2, theta=0.):
+def mesh_prm(p, tau, global_refinements=None, adaptive=None, interval=2, theta=0.,
+             mass="lumped"):
     text = "set Polynomial degree = %d\n" % p
     if p >= 2:
         # the matrix-free S with Jacobi: cheaper than the assembled S for
         # p >= 2 (benchmarks/step_operator.py), the same results
         text += "subsection Contact solver\n  set Step matrix = matrix-free\nend\n"
     text += ("subsection Time integration\n  set Time step = %.17g\n"
-             "  set Numerical dissipation = %g\nend\n" % (tau, theta))
+             "  set Numerical dissipation = %g\n"
+             "  set Mass matrix = %s\nend\n" % (tau, theta, mass))
     if global_refinements is not None:
         text += "subsection Mesh\n  set Initial global refinements = %d\nend\n" % global_refinements
     if adaptive:
@@ -127,6 +132,9 @@ results = {}  # scene -> list of dicts
 # dissipation
 dissipation = 0.05
 dissipative = "uniform theta = %g" % dissipation
+# and p = 1 with the blended mass (its default fraction, 1/2 + (c tau/h)^2
+# at tau = h/(2c))
+blended = "uniform blended"
 
 
 def bar_measures(rows, summary, position_column):
@@ -154,13 +162,18 @@ def bar_scene(key, base, scene, cells_list, position_column, across, levels, cri
     for p in [1, 2, 3]:
         # uniform meshes, then the same with numerical dissipation
         # (doc/algorithms.md)
-        for theta, mesh, suffix in [(0., "uniform", ""),
-                                    (dissipation, dissipative, "-theta-%g" % dissipation)]:
-            for cells in cells_list[p]:
+        variants = [(0., "lumped", "uniform", "", cells_list[p]),
+                    (dissipation, "lumped", dissipative, "-theta-%g" % dissipation,
+                     cells_list[p])]
+        if p == 1:
+            variants.append((0., "blended", blended, "-blended",
+                             cells_list[p] + [2 * cells_list[p][-1]]))
+        for theta, mass, mesh, suffix, cells_of_variant in variants:
+            for cells in cells_of_variant:
                 tau = 1. / cells / (2. * p)
                 rows, summary = run("%s-p%d-uniform-%d%s" % (key, p, cells, suffix),
                                     scene_prm(base, scene, entries(cells)) +
-                                    mesh_prm(p, tau, theta=theta))
+                                    mesh_prm(p, tau, theta=theta, mass=mass))
                 results.setdefault(key, []).append(dict(
                     p=p, mesh=mesh, finest=cells, dofs=mean(column(rows, "dofs")),
                     time=run_time(summary), **bar_measures(rows, summary, position_column)))
@@ -262,6 +275,39 @@ if not only or "ball_drop" in only:
     reference_scene("ball_drop", ball, {1: [1, 2], 2: [1, 2]}, 1, 3, 0.02,
                     [(1, [2, 16]), (0, [16])])
 
+def crossing(runs, target):
+    """(run time, position error) where the error of the runs (one
+    variant, by mesh) falls to target, interpolated log-log between the
+    two runs around it; None if no run reaches it."""
+    runs = sorted(runs, key=lambda v: v["time"])
+    for a, b in zip(runs, runs[1:]):
+        if a["error"] > target >= b["error"]:
+            w = math.log(a["error"] / target) / math.log(a["error"] / b["error"])
+            return tuple(math.exp((1 - w) * math.log(a[m]) + w * math.log(b[m]))
+                         for m in ["time", "position"])
+    return None
+
+
+def print_crossings(key, values):
+    """The run time (and position error) at which each uniform variant's
+    energy-norm error reaches 0.10 and 0.05 (the targets for the bar:
+    0.05 in 30 s with a position error <= 0.005 m)."""
+    print("\n%s: run time [s] (position error [m]) at an energy-norm error of\n" % key)
+    print("| p | mesh | 0.10 | 0.05 |\n|---|---|---|---|")
+    for p in [1, 2, 3]:
+        for mesh in ["uniform", dissipative, blended]:
+            runs = [v for v in values if v["p"] == p and v["mesh"] == mesh]
+            if not runs:
+                continue
+            cells = []
+            for target in [0.10, 0.05]:
+                at = crossing(runs, target)
+                best = min(runs, key=lambda v: v["error"])
+                cells.append("%.3g (%.2g)" % at if at else
+                             "not reached (%.3g at %.3g s)" % (best["error"], best["time"]))
+            print("| %d | %s | %s | %s |" % (p, mesh, cells[0], cells[1]))
+
+
 for key, values in results.items():
     print("\n%s:\n" % key)
     measures = [m for m in ["error", "error max", "position", "release", "intervals",
@@ -280,12 +326,13 @@ for key, values in results.items():
         for ax, measure in zip(axes, ["error", "position"]):
             ax.loglog([v["time"] for v in uniform], [v[measure] for v in uniform], "o-",
                       color=colour, label="p = %d uniform" % p)
-            damped = [v for v in values if v["p"] == p and v["mesh"] == dissipative]
-            if damped:
-                ax.loglog([v["time"] for v in damped], [v[measure] for v in damped], "x--",
-                          color=colour, label="p = %d %s" % (p, dissipative))
+            for variant, style in [(dissipative, "x--"), (blended, "+-.")]:
+                runs = [v for v in values if v["p"] == p and v["mesh"] == variant]
+                if runs:
+                    ax.loglog([v["time"] for v in runs], [v[measure] for v in runs], style,
+                              color=colour, label="p = %d %s" % (p, variant))
             for v in values:
-                if v["p"] == p and v["mesh"] not in ["uniform", dissipative]:
+                if v["p"] == p and v["mesh"] not in ["uniform", dissipative, blended]:
                     ax.loglog([v["time"]], [v[measure]],
                               "s" if "recovery" in v["mesh"] else
                               "D" if "from level" in v["mesh"] else
@@ -304,3 +351,5 @@ for key, values in results.items():
     fig.tight_layout()
     fig.savefig("doc/work_precision_%s.png" % key, dpi=100)
     print("wrote doc/work_precision_%s.png" % key)
+    if key in ["bar", "two_bars"]:
+        print_crossings(key, values)
