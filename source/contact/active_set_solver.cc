@@ -104,7 +104,10 @@ namespace dyncontact
       "1e-12",
       Patterns::Double(0.),
       "Relative tolerance of the CG solver for the static problem's "
-      "condensed linear systems: it stops when the l2 norm of the residual "
+      "condensed linear systems and for the L2 projection (12f) of the "
+      "dynamic schemes with a consistent or blended mass (an inexact "
+      "projection breaks N-CS's energy inequality by its residual): it "
+      "stops when the l2 norm of the residual "
       "is below this times the larger of the norms of the right-hand side "
       "and of the condensed right-hand side. (The time steps of the dynamic "
       "schemes use 'Step solver tolerance'.) Dimensionless, in (0, 1).");
@@ -112,14 +115,15 @@ namespace dyncontact
       "Step solver tolerance",
       "1e-6",
       Patterns::Double(0.),
-      "Relative tolerance of the CG solver in a time step of the dynamic "
-      "schemes (the displacement step, and the L2 projection with a "
-      "consistent mass): CG stops when the l2 norm of the residual is below "
+      "Relative tolerance of the CG solver in the displacement step of the "
+      "dynamic schemes and in their L2 projection with a lumped mass (a "
+      "solve with two bodies or hanging nodes): CG stops when the l2 norm of "
+      "the residual is below "
       "this times that of its start (uⁿ + tau u̇ⁿ, or the last active-set "
       "iterate), i.e. relative to the step's correction beyond the start, "
       "not to the whole right-hand side (a floor of 1e-14 times that, "
       "round-off). The solution is then moved along the line from the "
-      "step's origin (the last displacement; for an L2 projection the "
+      "step's origin (the last displacement; for a projection the "
       "displacement it projects from) to where its residual is orthogonal "
       "to the increment (one more product with the matrix), so that the "
       "residual does no work on the step: the energy identity of Theorem "

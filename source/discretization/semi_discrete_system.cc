@@ -514,7 +514,8 @@ namespace dyncontact
     if (parameters.consistent_mass_fraction == 1.)
       return "consistent";
     std::ostringstream text;
-    text << "blended (" << parameters.consistent_mass_fraction
+    // (+ 0.: -0 printed as 0)
+    text << "blended (" << parameters.consistent_mass_fraction + 0.
          << " consistent)";
     return text.str();
   }

@@ -1,5 +1,7 @@
 // Persistency (eq. 19): the largest normal velocity |c_p . udot| over the
-// rows active in the displacement step; N-CS++ makes it zero.
+// rows active in the displacement step; N-CS++ makes it zero with a lumped
+// mass (a consistent or blended one couples the projection's rows, which
+// may release a row of the step: a small normal velocity remains).
 
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/postprocess/interface.h>

@@ -142,6 +142,8 @@ namespace dyncontact
                        const VectorType *origin = nullptr);
 
     /// v = P(w) (the initial guess is w); fills the report's projection.
+    /// @p origin: see solve_displacement(); not used with a consistent or
+    /// blended mass, whose CG stops at Linear solver tolerance.
     void
     project(const VectorType &w,
             VectorType       &v,
