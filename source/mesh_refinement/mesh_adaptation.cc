@@ -61,6 +61,8 @@ namespace dyncontact
       tau,
       timer);
     record.add(adaptation.energy_change, adaptation.penetration);
+    record.add_motion(adaptation.momentum_change,
+                      adaptation.displacement_change);
     record.add_coarsening(coarsening_limited.first, coarsening_limited.second);
     if (error_tolerance > 0.)
       record.add_estimate(tolerance_marked.first, tolerance_marked.second);

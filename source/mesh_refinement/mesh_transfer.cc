@@ -25,6 +25,15 @@ namespace dyncontact
 
 
   void
+  MeshTransfer::add_motion(const double momentum, const double displacement)
+  {
+    momentum_change     = std::max(momentum_change, momentum);
+    displacement_change = std::max(displacement_change, displacement);
+  }
+
+
+
+  void
   MeshTransfer::add_estimate(const double estimate, const unsigned int above)
   {
     estimated_error       = std::max(estimated_error, estimate);
@@ -39,7 +48,8 @@ namespace dyncontact
     std::ostringstream s;
     s << std::setprecision(17) << energy_change << " " << penetration << " "
       << coarsening_refused << " " << coarsening_removed << " "
-      << estimated_error << " " << cells_above_tolerance;
+      << estimated_error << " " << cells_above_tolerance << " "
+      << momentum_change << " " << displacement_change;
     state["mesh_transfer"] = s.str();
   }
 
@@ -68,6 +78,13 @@ namespace dyncontact
       {
         estimated_error       = estimate;
         cells_above_tolerance = above;
+      }
+    // (and those written before the momentum's change six)
+    double momentum = 0., displacement = 0.;
+    if (s >> momentum >> displacement)
+      {
+        momentum_change     = momentum;
+        displacement_change = displacement;
       }
   }
 } // namespace dyncontact

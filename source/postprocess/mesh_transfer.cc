@@ -29,7 +29,9 @@ namespace dyncontact
       columns() const override
       {
         std::vector<std::string> names{"energy_transfer",
-                                       "transfer_penetration"};
+                                       "transfer_penetration",
+                                       "momentum_transfer",
+                                       "displacement_transfer"};
         if (limit_columns())
           names.insert(names.end(),
                        {"coarsening_refused", "coarsening_removed"});
@@ -108,7 +110,11 @@ namespace dyncontact
       execute(std::vector<double> &row) override
       {
         const auto &record = this->get_mesh_transfer();
-        row.insert(row.end(), {record.energy_change, record.penetration});
+        row.insert(row.end(),
+                   {record.energy_change,
+                    record.penetration,
+                    record.momentum_change,
+                    record.displacement_change});
         if (limit_columns())
           row.insert(row.end(),
                      {double(record.coarsening_refused),

@@ -5,6 +5,7 @@
 // the displacement of the body's centre of mass (the position error of a body
 // beside its energy-norm error).
 
+#include <dyncontact/discretization/body_sums.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/postprocess/interface.h>
 #include <dyncontact/scenes/interface.h>
@@ -13,33 +14,6 @@ namespace dyncontact
 {
   namespace Postprocess
   {
-    namespace
-    {
-      /**
-       * Sums of (M x)_i over each body's DoFs of each component, over all
-       * ranks: entry 3 b + d for body b and component d.
-       */
-      template <int dim>
-      std::vector<double>
-      body_sums(const SemiDiscreteSystem<dim> &system,
-                const VectorType              &x,
-                const unsigned int             n_bodies,
-                const MPI_Comm                 communicator)
-      {
-        VectorType M_x;
-        system.matrices().mass_vmult(M_x, x);
-        std::vector<double>               sums(3 * n_bodies, 0.);
-        const std::vector<unsigned char> &slots  = system.get_owned_dof_slots();
-        const double                     *values = M_x.begin();
-        for (std::size_t k = 0; k < slots.size(); ++k)
-          sums[3 * (slots[k] / dim) + slots[k] % dim] += values[k];
-        Utilities::MPI::sum(sums, communicator, sums);
-        return sums;
-      }
-    } // namespace
-
-
-
     template <int dim>
     class Momentum : public Interface<dim>
     {
@@ -104,29 +78,12 @@ namespace dyncontact
       void
       execute(std::vector<double> &row) override
       {
-        const SemiDiscreteSystem<dim> &system   = this->get_system();
-        const unsigned int             n_bodies = this->get_scene().n_bodies();
-        const VectorType              &u        = this->get_solution();
-        // M is symmetric and couples neither components nor bodies: the
-        // sum of M u over a body's component is that of m_i u_i with the
-        // row sums m = M 1, and its mass that of m_i (one product)
-        VectorType ones(u), m;
-        ones = 1.;
-        system.matrices().mass_vmult(m, ones);
-        std::vector<double> sums(6 * n_bodies, 0.); // M u, then the masses
-        const std::vector<unsigned char> &slots = system.get_owned_dof_slots();
-        const double *m_values = m.begin(), *u_values = u.begin();
-        for (std::size_t k = 0; k < slots.size(); ++k)
-          {
-            const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
-            sums[slot] += m_values[k] * u_values[k];
-            sums[3 * n_bodies + slot] += m_values[k];
-          }
-        Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
-        for (unsigned int k = 0; k < 3 * n_bodies; ++k)
-          row.push_back(sums[3 * n_bodies + k] > 0. ?
-                          sums[k] / sums[3 * n_bodies + k] :
-                          0.);
+        const std::vector<double> means =
+          body_mean_displacements(this->get_system(),
+                                  this->get_solution(),
+                                  this->get_scene().n_bodies(),
+                                  this->get_mpi_communicator());
+        row.insert(row.end(), means.begin(), means.end());
       }
     };
 

@@ -4,6 +4,7 @@
 #include <dyncontact/base/triangulation.h>
 #include <dyncontact/base/vector_copy.h>
 #include <dyncontact/contact/contact_setup.h>
+#include <dyncontact/discretization/body_sums.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
 #include <dyncontact/problem/discrete_problem.h>
 #include <dyncontact/scenes/interface.h>
@@ -480,12 +481,21 @@ namespace dyncontact
     // (only where the mesh changes: an adaptation that marks no cell
     // costs no energy evaluation; the energy before reads A u from the
     // last step's cache, the one after computes A u on the new mesh, which
-    // the next step then finds in the cache)
-    const auto energy = [&]() {
-      TimerOutput::Scope t(timer, "adaptation: energy transfer");
-      return system->total_energy(u, udot);
+    // the next step then finds in the cache); with each body's momentum and
+    // mean displacement
+    struct Measures
+    {
+      double              energy;
+      std::vector<double> momenta, means;
     };
-    const double energy_before = energy();
+    const auto measure = [&]() {
+      TimerOutput::Scope t(timer, "adaptation: energy transfer");
+      const unsigned int n_bodies = scene.n_bodies();
+      return Measures{system->total_energy(u, udot),
+                      body_sums(*system, udot, n_bodies, comm),
+                      body_mean_displacements(*system, u, n_bodies, comm)};
+    };
+    const Measures before = measure();
     {
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       // transfer u and udot to the new mesh (p4est also repartitions it)
@@ -512,7 +522,12 @@ namespace dyncontact
       adaptation.penetration =
         integrator->restore_constraints(u, contact->get_row_operator());
     }
-    adaptation.energy_change = energy() - energy_before;
+    const Measures after     = measure();
+    adaptation.energy_change = after.energy - before.energy;
+    adaptation.momentum_change =
+      largest_body_change(before.momenta, after.momenta);
+    adaptation.displacement_change =
+      largest_body_change(before.means, after.means);
     return adaptation;
   }
 

@@ -27,6 +27,10 @@ namespace dyncontact
     /// sqrt(sum eta_K / E) at an adaptation (0: none since the last row).
     double       estimated_error       = 0.;
     unsigned int cells_above_tolerance = 0;
+    /// The largest change of a body's momentum (the momentum columns'
+    /// units) and of its mean displacement (m) in one transfer.
+    double momentum_change     = 0.;
+    double displacement_change = 0.;
 
     /// One transfer changed the energy by @p energy and left the
     /// penetration @p transfer_penetration.
@@ -37,6 +41,11 @@ namespace dyncontact
     /// J removed by the others.
     void
     add_coarsening(const unsigned int refused, const double removed);
+
+    /// One transfer changed a body's momentum by @p momentum and its mean
+    /// displacement by @p displacement at most.
+    void
+    add_motion(const double momentum, const double displacement);
 
     /// One adaptation marked by the tolerance: the estimated relative error
     /// @p estimate, @p above cells to refine at Maximum level.

@@ -178,6 +178,9 @@ namespace dyncontact
       /// the largest penetration of the new K_h that the transfer left and
       /// that was projected away (m)
       double penetration = 0.;
+      /// the largest change of a body's momentum (as the momentum columns)
+      /// and of its mean displacement (m), the projection included
+      double momentum_change = 0., displacement_change = 0.;
     };
 
     /// Refines and coarsens the cells @p mark_cells marks, transfers (u,

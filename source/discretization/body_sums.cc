@@ -1,0 +1,93 @@
+#include <dyncontact/discretization/body_sums.h>
+#include <dyncontact/discretization/semi_discrete_system.h>
+
+#include <algorithm>
+#include <cmath>
+
+// Sums over each body of M x: momentum and the mean displacement (the
+// momentum and mean displacement postprocessors, and the change of both
+// at a mesh transfer).
+
+namespace dyncontact
+{
+  template <int dim>
+  std::vector<double>
+  body_sums(const SemiDiscreteSystem<dim> &system,
+            const VectorType              &x,
+            const unsigned int             n_bodies,
+            const MPI_Comm                 communicator)
+  {
+    VectorType M_x;
+    system.matrices().mass_vmult(M_x, x);
+    std::vector<double>               sums(3 * n_bodies, 0.);
+    const std::vector<unsigned char> &slots  = system.get_owned_dof_slots();
+    const double                     *values = M_x.begin();
+    for (std::size_t k = 0; k < slots.size(); ++k)
+      sums[3 * (slots[k] / dim) + slots[k] % dim] += values[k];
+    Utilities::MPI::sum(sums, communicator, sums);
+    return sums;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  body_mean_displacements(const SemiDiscreteSystem<dim> &system,
+                          const VectorType              &u,
+                          const unsigned int             n_bodies,
+                          const MPI_Comm                 communicator)
+  {
+    // M is symmetric and couples neither components nor bodies: the sum of
+    // M u over a body's component is that of m_i u_i with the row sums
+    // m = M 1, and its mass that of m_i (one product)
+    VectorType ones(u), m;
+    ones = 1.;
+    system.matrices().mass_vmult(m, ones);
+    std::vector<double> sums(6 * n_bodies, 0.); // M u, then the masses
+    const std::vector<unsigned char> &slots = system.get_owned_dof_slots();
+    const double *m_values = m.begin(), *u_values = u.begin();
+    for (std::size_t k = 0; k < slots.size(); ++k)
+      {
+        const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
+        sums[slot] += m_values[k] * u_values[k];
+        sums[3 * n_bodies + slot] += m_values[k];
+      }
+    Utilities::MPI::sum(sums, communicator, sums);
+    std::vector<double> means(3 * n_bodies, 0.);
+    for (unsigned int k = 0; k < 3 * n_bodies; ++k)
+      means[k] =
+        sums[3 * n_bodies + k] > 0. ? sums[k] / sums[3 * n_bodies + k] : 0.;
+    return means;
+  }
+
+
+
+  double
+  largest_body_change(const std::vector<double> &a,
+                      const std::vector<double> &b)
+  {
+    double largest = 0.;
+    for (std::size_t k = 0; k + 2 < a.size() && k + 2 < b.size(); k += 3)
+      largest = std::max(largest,
+                         std::sqrt(std::pow(a[k] - b[k], 2) +
+                                   std::pow(a[k + 1] - b[k + 1], 2) +
+                                   std::pow(a[k + 2] - b[k + 2], 2)));
+    return largest;
+  }
+
+
+
+#define DYNCONTACT_INSTANTIATE(dim)                                       \
+  template std::vector<double> body_sums(const SemiDiscreteSystem<dim> &, \
+                                         const VectorType &,              \
+                                         const unsigned int,              \
+                                         const MPI_Comm);                 \
+  template std::vector<double> body_mean_displacements(                   \
+    const SemiDiscreteSystem<dim> &,                                      \
+    const VectorType &,                                                   \
+    const unsigned int,                                                   \
+    const MPI_Comm);
+  DYNCONTACT_INSTANTIATE(2)
+  DYNCONTACT_INSTANTIATE(3)
+#undef DYNCONTACT_INSTANTIATE
+} // namespace dyncontact
