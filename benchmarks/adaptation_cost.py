@@ -1,6 +1,5 @@
 #!/usr/bin/python3
-"""What one mesh adaptation costs, in time steps of the same mesh (issue:
-error against run time). Runs the bar impact (N-CS++, lumped mass,
+"""What one mesh adaptation costs, in time steps of the same mesh. Runs the bar impact (N-CS++, lumped mass,
 H = 0.25, adapted every 2 steps up to 2 levels above the coarse mesh,
 tau = h_min / (2 p c)) in 2D and 3D for p = 1, 2, 3 with each velocity
 criterion, Kelly's and the gradient recovery, and the recovery again with
@@ -33,7 +32,7 @@ left out with it) and the bar below,
 and adds for p >= 2 the recovery runs with 'Contact solver/Preconditioner
 = multigrid' (criterion 'recovery mg'), the preconditioner for large tau;
 without --only it runs 'recovery', 'recovery mf' and 'recovery mg'.
-Then issue 31's bar to T = 2.5 s (2D, p = 1, 32 cells along, levels 0 to 2,
+Then the adaptive bar of doc/results.md (H = 0.25) to T = 2.5 s (2D, p = 1, 32 cells along, levels 0 to 2,
 tau = 1/256) with each criterion against the uniform mesh of its finest
 level: the energy-norm error at T, the mean DoFs and the time loop's wall
 time (summary.txt) without the sampled error norms, also with the serial

@@ -1,7 +1,7 @@
 // What one mesh adaptation's refinement costs in deal.II's distributed
 // triangulation (p4est, which the program uses on any number of ranks)
-// against its serial Triangulation on one rank (issue: error against run
-// time; doc/results.md, "Cost of a mesh adaptation"). A 2D bar mesh of
+// against its serial Triangulation on one rank (doc/results.md, "Cost of
+// a mesh adaptation"). A 2D bar mesh of
 // nx x nx/4 cells on [0, 1] x [0, 0.25] (the bar impact's 128 cells along
 // with H = 0.25) is refined by two levels in a band of width 0.1 that moves
 // by 0.01 per adaptation (a front), and coarsened behind it, 40 times; each

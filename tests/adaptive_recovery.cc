@@ -1,4 +1,4 @@
-// The gradient-recovery indicator of the velocity on issue 31's bar (H =
+// The gradient-recovery indicator of the velocity on the adaptive bar (H =
 // 0.25, 32 cells along, levels 0 to 2, adapted every 2 steps, tau = h_min /
 // 2c, N-CS++ with the lumped mass), against the uniform mesh of its finest
 // level (128 cells along), to t = 0.6 s (the impact at 0.1 s, the front

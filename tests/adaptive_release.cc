@@ -1,4 +1,4 @@
-// The release of the bar on an adaptive mesh (issue 31's bar: H = 0.25, 32
+// The release of the bar on an adaptive mesh (the adaptive bar: H = 0.25, 32
 // cells along, levels 0 to 2 by the Kelly indicator of the velocity, adapted
 // every 2 steps, tau = h_min / 2c, N-CS++ with the lumped mass): a slave
 // node on which a hanging node hangs takes the hanging node's share of the

@@ -1,16 +1,15 @@
 // The contact zone that 'Contact zone refinements' refines for a drop
-// (issue "Trust", item 7): sized from Hertz's impact, not from the static
-// load (zero for a drop, which refined only the cells at the first contact
-// point). HertzScene::impact_contact_size() against values computed here
-// another way: in 3D Hertz's closed form a = sqrt(R alpha_max),
-// alpha_max = (15 m v^2 / (16 E* sqrt(R)))^(2/5); in 2D the force P whose
-// work P dalpha (the indentation alpha(P) of a cylinder on a half-space,
-// differentiated and integrated numerically here) equals 1/2 m v^2, and
-// b = sqrt(4 P R / (pi E*)). Then the mesh: with one refinement of the zone
-// the refined cells reach out to 1.5 a + g0 from the first contact point
-// (at least 0.8 times, and not beyond by more than a coarse cell); without
-// a drop velocity (the static size, zero without a load) they reach less
-// than half as far.
+// (a review of the trust in the results): sized from Hertz's impact, not from
+// the static load (zero for a drop, which refined only the cells at the first
+// contact point). HertzScene::impact_contact_size() against values computed
+// here another way: in 3D Hertz's closed form a = sqrt(R alpha_max), alpha_max
+// = (15 m v^2 / (16 E* sqrt(R)))^(2/5); in 2D the force P whose work P dalpha
+// (the indentation alpha(P) of a cylinder on a half-space, differentiated and
+// integrated numerically here) equals 1/2 m v^2, and b = sqrt(4 P R / (pi E*)).
+// Then the mesh: with one refinement of the zone the refined cells reach out
+// to 1.5 a + g0 from the first contact point (at least 0.8 times, and not
+// beyond by more than a coarse cell); without a drop velocity (the static size,
+// zero without a load) they reach less than half as far.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>

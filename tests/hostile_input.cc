@@ -1,9 +1,9 @@
-// Hostile input, by class of failure (issue "Trust"): include cycles, Gmsh
-// meshes the program cannot use, damaged checkpoints, meshes too large for
-// the machine, data outside physical ranges, static problems that nothing
-// holds (singular: the message names the free body), incompatible options, a
-// locked output directory. Every case runs the program with the
-// output directory of an earlier, successful run and must
+// Hostile input, by class of failure (a review of the trust in the results):
+// include cycles, Gmsh meshes the program cannot use, damaged checkpoints,
+// meshes too large for the machine, data outside physical ranges, static
+// problems that nothing holds (singular: the message names the free body),
+// incompatible options, a locked output directory. Every case runs the program
+// with the output directory of an earlier, successful run and must
 //  - exit with a non-zero status,
 //  - print "dyncontact: error:" with a message that names the parameter or
 //    file (a fragment of it is checked), and no backtrace,

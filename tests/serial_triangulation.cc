@@ -1,6 +1,6 @@
 // Mesh/Triangulation = serial (deal.II's Triangulation on one rank instead
 // of p4est's) against the distributed triangulation, on adaptive meshes:
-// - issue 31's bar (H = 0.25, 32 cells along, levels 0 to 2, the recovery
+// - the adaptive bar (H = 0.25, 32 cells along, levels 0 to 2, the recovery
 //   indicator every 2 steps, p = 1, assembled S) to t = 0.6 s; two bars of
 //   4 and 5 cells across adapted by the recovery indicator (two bodies,
 //   contact rows on the adapted mesh) with p = 2 and the matrix-free S; a

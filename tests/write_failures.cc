@@ -1,9 +1,9 @@
 // Every file the program writes is checked: a write that fails stops the
 // run with "dyncontact: error:" and a message naming the file, a non-zero
-// exit status and no backtrace (issue "Trust", second round). The files are
-// made unwritable as root can (a directory in the file's place, or the
-// file a link to /dev/full, where every write fails with "No space left on
-// device"): statistics.tsv when it is opened and when a row is added,
+// exit status and no backtrace (a second review of the trust in the results).
+// The files are made unwritable as root can (a directory in the file's place,
+// or the file a link to /dev/full, where every write fails with "No space left
+// on device"): statistics.tsv when it is opened and when a row is added,
 // summary.txt, the .pvd record of the VTU files, a checkpoint's mark.
 // Earlier, each of these runs ended with exit status 0.
 
