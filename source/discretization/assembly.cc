@@ -38,22 +38,14 @@ namespace dyncontact
                 const double         consistent_fraction)
         : lumped_mass(lumped_mass)
         , consistent_fraction(lumped_mass ? 0. : consistent_fraction)
+        , lumped_fraction(lumped_mass ? 1. : 1. - consistent_fraction)
         , quadrature(fe.degree + 1)
-        // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes
-        // the element mass matrix of FE_Q diagonal
-        , mass_quadrature(lumped_mass ?
-                            Quadrature<dim>(QGaussLobatto<dim>(fe.degree + 1)) :
-                            Quadrature<dim>(QGauss<dim>(fe.degree + 1)))
         , face_quadrature(fe.degree + 1)
         , lumped_face_quadrature(fe.degree + 1)
         , fe_values(mapping,
                     scalar_fe,
                     quadrature,
                     update_values | update_JxW_values)
-        , mass_values(mapping,
-                      scalar_fe,
-                      mass_quadrature,
-                      update_values | update_JxW_values)
         , face_values(mapping,
                       scalar_fe,
                       face_quadrature,
@@ -62,16 +54,19 @@ namespace dyncontact
                              scalar_fe,
                              lumped_face_quadrature,
                              update_values | update_JxW_values)
+        // the lumped mass matrix: nodal (Gauss-Lobatto) quadrature makes
+        // the element mass matrix of FE_Q diagonal
         , nodal_values(mapping,
                        scalar_fe,
                        QGaussLobatto<dim>(fe.degree + 1),
                        update_values | update_JxW_values)
         , dofs_per_cell(fe.n_dofs_per_cell())
         , n_nodes(scalar_fe.n_dofs_per_cell())
-        , scalar_mass(lumped_mass ? n_nodes : n_nodes * n_nodes)
+        , scalar_mass(lumped_mass ? 0 : n_nodes * n_nodes)
+        , scalar_lumped(n_nodes)
         , scalar_load(n_nodes)
       {
-        if (lumped_mass || this->consistent_fraction < 1.)
+        if (lumped_fraction > 0.)
           mass_diagonal.reinit(dofs_per_cell);
         if (!lumped_mass)
           mass.reinit(dofs_per_cell, dofs_per_cell);
@@ -95,9 +90,7 @@ namespace dyncontact
       {
         boundary_weights = 0.;
         fe_values.reinit(cell);
-        mass_values.reinit(cell);
-        const bool blended = !lumped_mass && consistent_fraction < 1.;
-        if (blended)
+        if (lumped_fraction > 0.)
           nodal_values.reinit(cell);
         bool positive = true;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -109,8 +102,7 @@ namespace dyncontact
         const bool same_volume_terms =
           have_volume_terms && rho == volume_rho &&
           fe_values.get_cell_similarity() == CellSimilarity::translation &&
-          mass_values.get_cell_similarity() == CellSimilarity::translation &&
-          (!blended ||
+          (lumped_fraction == 0. ||
            nodal_values.get_cell_similarity() == CellSimilarity::translation);
         if (!same_volume_terms)
           volume_terms(rho);
@@ -142,47 +134,36 @@ namespace dyncontact
           for (unsigned int k = 0; k < n_nodes; ++k)
             scalar_load[k] += fe_values.shape_value(k, q) * fe_values.JxW(q);
 
-        // (lumped: the element matrix is diagonal, only its diagonal is
-        // computed)
-        if (lumped_mass)
-          mass_diagonal = 0.;
-        else
-          mass = 0.;
-        std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
-        if (lumped_mass)
+        // the lumped part (1 - beta) M_K (Gauss-Lobatto), diagonal (a
+        // lumped mass: all of it), also kept in mass_diagonal
+        if (lumped_fraction > 0.)
           {
-            for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
+            std::fill(scalar_lumped.begin(), scalar_lumped.end(), 0.);
+            for (unsigned int q = 0; q < nodal_values.n_quadrature_points; ++q)
               for (unsigned int k = 0; k < n_nodes; ++k)
-                scalar_mass[k] += rho * mass_values.shape_value(k, q) *
-                                  mass_values.shape_value(k, q) *
-                                  mass_values.JxW(q);
+                scalar_lumped[k] +=
+                  lumped_fraction * rho * nodal_values.shape_value(k, q) *
+                  nodal_values.shape_value(k, q) * nodal_values.JxW(q);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              mass_diagonal(i) = scalar_mass[node[i]];
-            return;
+              mass_diagonal(i) = scalar_lumped[node[i]];
           }
-        for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
+        if (lumped_mass)
+          return;
+        // the consistent part beta M_K (Gauss, the load's quadrature)
+        mass = 0.;
+        std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
           for (unsigned int k = 0; k < n_nodes; ++k)
             for (unsigned int l = 0; l < n_nodes; ++l)
               scalar_mass[k * n_nodes + l] +=
-                rho * mass_values.shape_value(k, q) *
-                mass_values.shape_value(l, q) * mass_values.JxW(q);
-        // blended: beta times this plus the lumped part, 1 - beta times
-        // the lumped diagonal (also kept in mass_diagonal)
-        if (consistent_fraction < 1.)
+                rho * fe_values.shape_value(k, q) *
+                fe_values.shape_value(l, q) * fe_values.JxW(q);
+        if (lumped_fraction > 0.)
           {
             for (double &entry : scalar_mass)
               entry *= consistent_fraction;
-            std::vector<double> lumped_part(n_nodes, 0.);
-            for (unsigned int q = 0; q < nodal_values.n_quadrature_points; ++q)
-              for (unsigned int k = 0; k < n_nodes; ++k)
-                lumped_part[k] += (1. - consistent_fraction) * rho *
-                                  nodal_values.shape_value(k, q) *
-                                  nodal_values.shape_value(k, q) *
-                                  nodal_values.JxW(q);
             for (unsigned int k = 0; k < n_nodes; ++k)
-              scalar_mass[k * n_nodes + k] += lumped_part[k];
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              mass_diagonal(i) = lumped_part[node[i]];
+              scalar_mass[k * n_nodes + k] += scalar_lumped[k];
           }
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
@@ -222,25 +203,23 @@ namespace dyncontact
       }
 
       const bool lumped_mass;
-      /// beta of a blended mass (1: consistent, 0 if lumped)
-      const double                 consistent_fraction;
+      /// the consistent part beta and the lumped part 1 - beta of the mass
+      /// (lumped: 0 and 1; consistent: 1 and 0)
+      const double                 consistent_fraction, lumped_fraction;
       const QGauss<dim>            quadrature;
-      const Quadrature<dim>        mass_quadrature;
       const QGauss<dim - 1>        face_quadrature;
       const QGaussLobatto<dim - 1> lumped_face_quadrature;
       FEValues<dim>                fe_values;
-      FEValues<dim>                mass_values;
       FEFaceValues<dim>            face_values;
       FEFaceValues<dim>            lumped_face_values;
-      /// Gauss-Lobatto values for a blended mass's lumped part
-      FEValues<dim>      nodal_values;
-      const unsigned int dofs_per_cell;
-      const unsigned int n_nodes;
+      FEValues<dim>                nodal_values;
+      const unsigned int           dofs_per_cell;
+      const unsigned int           n_nodes;
       /// component and scalar shape function of each shape function
       std::vector<unsigned int> component, node;
-      /// the scalar mass int phi_k phi_l (lumped: its diagonal) and load
-      /// int phi_k
-      std::vector<double> scalar_mass;
+      /// the scalar mass's consistent part, its lumped part (diagonal) and
+      /// the load int phi_k
+      std::vector<double> scalar_mass, scalar_lumped;
       std::vector<double> scalar_load;
       /// whether volume_terms() ran, and the density it had
       bool   have_volume_terms = false;
@@ -383,7 +362,9 @@ namespace dyncontact
     };
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     std::unique_ptr<OwnedAdder> lumped_mass_adder, load_adder, weight_adder;
-    if (parameters.lumped_mass || parameters.consistent_mass_fraction < 1.)
+    // (setup() sized lumped_mass_diagonal for a lumped mass, or a blended
+    // mass's lumped part)
+    if (lumped_mass_diagonal.size() > 0)
       lumped_mass_adder =
         std::make_unique<OwnedAdder>(lumped_mass_diagonal, locally_owned);
     if (!parameters.multigrid_level)

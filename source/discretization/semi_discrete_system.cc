@@ -142,21 +142,16 @@ namespace dyncontact
     graph.reset();
     if (parameters.assembled_step_matrix || !parameters.lumped_mass)
       make_sparsity_graph();
-    // a lumped mass is kept as its diagonal only
+    // a lumped mass is kept as its diagonal only; a blended mass as its
+    // matrix and its lumped part (for the bound of Jacobi)
     if (parameters.lumped_mass)
-      {
-        mass_matrix.clear();
-        lumped_mass_diagonal.reinit(locally_owned, comm);
-      }
+      mass_matrix.clear();
     else
-      {
-        reinit_matrix(mass_matrix);
-        // (a blended mass's lumped part, for the bound of Jacobi)
-        if (parameters.consistent_mass_fraction < 1.)
-          lumped_mass_diagonal.reinit(locally_owned, comm);
-        else
-          lumped_mass_diagonal.clear();
-      }
+      reinit_matrix(mass_matrix);
+    if (parameters.lumped_mass || parameters.consistent_mass_fraction < 1.)
+      lumped_mass_diagonal.reinit(locally_owned, comm);
+    else
+      lumped_mass_diagonal.clear();
     stiffness_product.reinit(nullptr);
     viscous = scene.is_viscous();
 

@@ -203,8 +203,8 @@ namespace dyncontact
                 << "% of the energy), which Theorem 3.2 excludes. The "
                    "linear solver stops too early for this problem (the "
                    "work of contact forces on moving obstacles and of "
-                   "prescribed displacements, and the L2 projection with a "
-                   "consistent mass, are only as accurate as it): lower "
+                   "prescribed displacements, and the L2 projection of two "
+                   "bodies, are only as accurate as it): lower "
                    "'Contact solver/Step solver tolerance'."
                 << (curved_obstacle_moves() ?
                       " Or: a curved rigid obstacle moves, whose constraint "

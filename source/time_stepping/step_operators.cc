@@ -32,18 +32,20 @@ namespace dyncontact
       return &storage;
     }
 
-    /// max_i H_ii / D_ii for the diagonal @p H_diagonal of a matrix H >= M
-    /// and a diagonal D <= M (@p lower), the factor of the bound of H's
-    /// Jacobi-scaled condition number (ActiveSetSolver::set_matrix());
-    /// infinite without D (a consistent mass).
+    /// max(1, max_i H_ii / D_ii) over the D_ii > 0 of all ranks, for the
+    /// diagonals @p H_diagonal and @p D of two matrices; infinite without
+    /// @p D. With H >= M and a diagonal D <= M (the lumped mass, a blended
+    /// mass's lumped part; none for a consistent mass) the factor of the
+    /// bound of H's Jacobi-scaled condition number
+    /// (ActiveSetSolver::set_matrix()).
     double
-    lower_mass_ratio(const VectorType &H_diagonal,
-                     const VectorType *lower,
-                     const MPI_Comm    comm)
+    largest_ratio(const VectorType &H_diagonal,
+                  const VectorType *D,
+                  const MPI_Comm    comm)
     {
-      if (lower == nullptr)
+      if (D == nullptr)
         return std::numeric_limits<double>::infinity();
-      const double *H_ii = H_diagonal.begin(), *D_ii = lower->begin();
+      const double *H_ii = H_diagonal.begin(), *D_ii = D->begin();
       double        ratio = 1.;
       for (unsigned int k = 0; k < H_diagonal.locally_owned_size(); ++k)
         if (D_ii[k] > 0.)
@@ -84,9 +86,9 @@ namespace dyncontact
     else
       projection_solver.set_matrix(*system.M,
                                    nullptr,
-                                   lower_mass_ratio(matrix_diagonal(*system.M),
-                                                    system.M_lower,
-                                                    comm));
+                                   largest_ratio(matrix_diagonal(*system.M),
+                                                 system.M_lower,
+                                                 comm));
   }
 
 
@@ -162,18 +164,14 @@ namespace dyncontact
             };
           }
         // how far the stiffness and viscosity outweigh the mass in S
-        const double *S_ii = S_diagonal.begin(), *M_ii = M_diagonal.begin();
-        double        ratio = 1.;
-        for (unsigned int k = 0; k < S_diagonal.locally_owned_size(); ++k)
-          if (M_ii[k] > 0.)
-            ratio = std::max(ratio, S_ii[k] / M_ii[k]);
-        step_matrix->inertia_ratio = Utilities::MPI::max(ratio, comm);
+        step_matrix->inertia_ratio =
+          largest_ratio(S_diagonal, &M_diagonal, comm);
         // (the bound of S's Jacobi-scaled condition number needs a diagonal
         // D <= M: a lumped mass, or a blended mass's lumped part)
         if (!matrix_free())
           solver.set_matrix(S,
                             nullptr,
-                            lower_mass_ratio(S_diagonal, system.M_lower, comm));
+                            largest_ratio(S_diagonal, system.M_lower, comm));
       }
     return step_matrix;
   }

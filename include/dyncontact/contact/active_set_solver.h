@@ -102,7 +102,8 @@ namespace dyncontact
       /// [1e-9, 1e-4]. (A time step's residual does no work on its
       /// increment, whatever the tolerance: what remains of it in the
       /// balance is the work of the multipliers on moving obstacles and
-      /// prescribed displacements, and a consistent mass's L2 projection.)
+      /// prescribed displacements, and a lumped mass's L2 projection that
+      /// is a solve, with two bodies or hanging nodes.)
       double
       energy_tolerance() const
       {
