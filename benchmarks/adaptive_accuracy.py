@@ -8,8 +8,9 @@ level 4).
 
 tools/study.py runs the uniform meshes of levels 1 to 5 (h alone, the same
 tau) and the adaptive run (levels 1 to 4) as given and with each Mesh
-refinement/Coarsening tolerance of --tolerances, by the criterion energy
-error instead of Kelly's, and, marked by a tolerance instead of the
+refinement/Coarsening tolerance of --tolerances, with each Mesh
+refinement/Position tolerance (m) of --position-tolerances, by the
+criterion energy error instead of Kelly's, and, marked by a tolerance instead of the
 fractions, with each Mesh refinement/Error tolerance of --error-tolerances
 (the middle one also adapting every 4 steps instead of 2) and of
 --volume-tolerances with Error tolerance split = by volume, all compared with the uniform level-5 run. For each
@@ -24,7 +25,8 @@ comparisons).
 Usage, from the repository's top folder after tools/setup.sh (about 15
 minutes on one core):
     benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]
-        [--error-tolerances 0.2,0.1,0.05] [--volume-tolerances 0.4,0.2]"""
+        [--position-tolerances 1e-3,1e-4] [--error-tolerances 0.2,0.1,0.05]
+        [--volume-tolerances 0.4,0.2]"""
 import options
 import csv
 import os
@@ -38,6 +40,9 @@ tolerances = options.take_option(arguments, "--tolerances",
 error_tolerances = options.take_option(arguments, "--error-tolerances",
                                        lambda v: [t for t in v.split(",") if t],
                                        ["0.2", "0.1", "0.05"])
+position_tolerances = options.take_option(
+    arguments, "--position-tolerances",
+    lambda v: [t for t in v.split(",") if t], ["1e-3", "1e-4"])
 volume_tolerances = options.take_option(
     arguments, "--volume-tolerances", lambda v: [t for t in v.split(",") if t],
     ["0.4", "0.2"])
@@ -80,6 +85,9 @@ for t in tolerances:
                 "tolerance %s:Mesh refinement/Coarsening tolerance=%s" % (t, t)]
 command += ["--adaptive-variant",
             "energy error:Mesh refinement/Criteria=energy error, contact zone"]
+for t in position_tolerances:
+    command += ["--adaptive-variant",
+                "position %s:Mesh refinement/Position tolerance=%s" % (t, t)]
 for t in error_tolerances:
     command += ["--adaptive-variant",
                 "delta %s:Mesh refinement/Error tolerance=%s" % (t, t)]

@@ -60,6 +60,7 @@ namespace dyncontact
                                     "Refine fraction",
                                     "Coarsen fraction",
                                     "Coarsening tolerance",
+                                    "Position tolerance",
                                     "Error tolerance",
                                     "Error tolerance split",
                                     "Minimum level",

@@ -63,7 +63,9 @@ namespace dyncontact
     record.add(adaptation.energy_change, adaptation.penetration);
     record.add_motion(adaptation.momentum_change,
                       adaptation.displacement_change);
-    record.add_coarsening(coarsening_limited.first, coarsening_limited.second);
+    record.add_coarsening(coarsening_limited.refused,
+                          coarsening_limited.removed,
+                          coarsening_limited.moved);
     if (error_tolerance > 0.)
       record.add_estimate(tolerance_marked.first, tolerance_marked.second);
     return adaptation.changed;

@@ -94,6 +94,27 @@ namespace dyncontact
       "columns coarsening_refused (families) and coarsening_removed (J, the "
       "removed part's energy) when > 0.");
     prm.declare_entry(
+      "Position tolerance",
+      "0",
+      Patterns::Double(0.),
+      "The largest shift of a body's centre of mass at the end time T that "
+      "the coarsening of the whole run may cause (m), estimated as in free "
+      "flight: each family of cells flagged for coarsening shifts its body "
+      "by (dq + (T - t) dp) / m_b, where dp and dq are the changes of the "
+      "integrals of rho u_dot and rho u over the family (its cells against "
+      "their parent after the transfer, on the parent's geometry: a curved "
+      "boundary's coarsening changes the body's mass), m_b the body's mass "
+      "and t the adaptation's time; where the vector sum of one "
+      "adaptation's shifts of a body exceeds this value times the "
+      "adaptation's share of the run (Refinement interval times the time "
+      "step over T), the families of the largest shifts keep their cells "
+      "until it does not. A wave that carries a body's motion then stays "
+      "fine. The estimate leaves out the hanging nodes' constraints on the "
+      "neighbours and the contact forces' response. In m, 0 or more; 0: no "
+      "limit. Statistics columns coarsening_refused (families refused by "
+      "this or Coarsening tolerance) and coarsening_moved (m, the accepted "
+      "shifts' sums over the bodies) when > 0.");
+    prm.declare_entry(
       "Error tolerance",
       "0",
       Patterns::Double(0., 1.),
@@ -163,6 +184,7 @@ namespace dyncontact
     front_widening       = prm.get_double("Front widening");
     coarsening_tolerance = prm.get_double("Coarsening tolerance");
     error_tolerance      = prm.get_double("Error tolerance");
+    position_tolerance   = prm.get_double("Position tolerance");
     split_by_volume      = prm.get("Error tolerance split") == "by volume";
     const auto selected  = Utilities::split_string_list(prm.get("Criteria"));
     prm.leave_subsection();
@@ -446,6 +468,7 @@ namespace dyncontact
     const std::pair<double, double> energy =
       error_tolerance > 0. || limited ? energy_and_volume() :
                                         std::pair<double, double>(0., 0.);
+    const bool moving = position_tolerance > 0.;
     // by the tolerance, or by the indicators of all criteria, each scaled
     // to maximum 1, added
     Vector<float> indicators(triangulation.n_active_cells());
@@ -504,8 +527,8 @@ namespace dyncontact
           if (cell->level() <= int(min_level))
             cell->clear_coarsen_flag();
         }
-    coarsening_limited = limited ? limit_coarsening(energy) :
-                                   std::pair<unsigned int, double>(0, 0.);
+    coarsening_limited =
+      limited || moving ? limit_coarsening(energy) : CoarseningLimit();
   }
 
 

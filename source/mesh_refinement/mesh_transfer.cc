@@ -16,10 +16,13 @@ namespace dyncontact
 
 
   void
-  MeshTransfer::add_coarsening(const unsigned int refused, const double removed)
+  MeshTransfer::add_coarsening(const unsigned int refused,
+                               const double       removed,
+                               const double       moved)
   {
     coarsening_refused += refused;
     coarsening_removed += removed;
+    coarsening_moved += moved;
   }
 
 
@@ -49,7 +52,8 @@ namespace dyncontact
     s << std::setprecision(17) << energy_change << " " << penetration << " "
       << coarsening_refused << " " << coarsening_removed << " "
       << estimated_error << " " << cells_above_tolerance << " "
-      << momentum_change << " " << displacement_change;
+      << momentum_change << " " << displacement_change << " "
+      << coarsening_moved;
     state["mesh_transfer"] = s.str();
   }
 
@@ -86,5 +90,9 @@ namespace dyncontact
         momentum_change     = momentum;
         displacement_change = displacement;
       }
+    // (and those written before the position tolerance eight)
+    double moved = 0.;
+    if (s >> moved)
+      coarsening_moved = moved;
   }
 } // namespace dyncontact

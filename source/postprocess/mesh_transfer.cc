@@ -35,6 +35,10 @@ namespace dyncontact
         if (limit_columns())
           names.insert(names.end(),
                        {"coarsening_refused", "coarsening_removed"});
+        else if (position_columns())
+          names.push_back("coarsening_refused");
+        if (position_columns())
+          names.push_back("coarsening_moved");
         if (tolerance_columns())
           names.insert(names.end(),
                        {"estimated_error", "cells_above_tolerance"});
@@ -69,9 +73,36 @@ namespace dyncontact
                       "Coarsening tolerance = ")
                 << tolerance
                 << (adaptor.coarsening_limit_of_error_tolerance() ? ")" : "")
+                << (adaptor.get_position_tolerance() > 0. ?
+                      " or Position tolerance" :
+                      "")
                 << " (their coarsening would have removed more than their "
                    "share); the parts removed by the others: "
                 << removed << " J in all\n";
+          }
+        if (adaptor.get_position_tolerance() > 0. &&
+            s.has_column("coarsening_moved"))
+          {
+            double moved = 0.;
+            for (const double m : s.column("coarsening_moved"))
+              moved += m;
+            out << "coarsening by the bodies' motion: Mesh "
+                   "refinement/Position tolerance = "
+                << adaptor.get_position_tolerance()
+                << " m; the accepted coarsening's estimated shift of the "
+                   "bodies' centres of mass at the end time, as in free "
+                   "flight: "
+                << moved << " m in all";
+            if (tolerance == 0.)
+              {
+                double refused = 0.;
+                for (const double r : s.column("coarsening_refused"))
+                  refused += r;
+                out << "; " << refused
+                    << " families kept (their coarsening would have shifted "
+                       "their body by more than their share)";
+              }
+            out << "\n";
           }
         if (delta > 0. && s.has_column("estimated_error"))
           {
@@ -119,6 +150,10 @@ namespace dyncontact
           row.insert(row.end(),
                      {double(record.coarsening_refused),
                       record.coarsening_removed});
+        else if (position_columns())
+          row.push_back(record.coarsening_refused);
+        if (position_columns())
+          row.push_back(record.coarsening_moved);
         // (0 in rows without an adaptation)
         if (tolerance_columns())
           row.insert(row.end(),
@@ -134,6 +169,13 @@ namespace dyncontact
       {
         const auto &adaptor = this->get_mesh_adaptor();
         return adaptor.get_coarsening_tolerance() > 0. &&
+               adaptor.adapts_during_run();
+      }
+      bool
+      position_columns() const
+      {
+        const auto &adaptor = this->get_mesh_adaptor();
+        return adaptor.get_position_tolerance() > 0. &&
                adaptor.adapts_during_run();
       }
       bool

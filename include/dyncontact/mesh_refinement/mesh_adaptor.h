@@ -103,6 +103,13 @@ namespace dyncontact
                0.25 * error_tolerance * error_tolerance;
     }
 
+    /// "Position tolerance" (m; 0: no limit by the bodies' motion).
+    double
+    get_position_tolerance() const
+    {
+      return position_tolerance;
+    }
+
     /// "Error tolerance" (0: the cells are marked by the fractions).
     double
     get_error_tolerance() const
@@ -199,12 +206,25 @@ namespace dyncontact
     std::pair<double, double>
     energy_and_volume() const;
 
+    /// What limit_coarsening() refused and let pass, over all ranks.
+    struct CoarseningLimit
+    {
+      /// families refused
+      unsigned int refused = 0;
+      /// the energy of what the accepted families remove (J)
+      double removed = 0.;
+      /// the accepted families' estimated shifts of a body's centre of
+      /// mass at the end time, summed (m)
+      double moved = 0.;
+    };
+
     /// Clears the coarsening flags of every family of cells whose
     /// coarsening would remove more than its share of
     /// get_coarsening_tolerance() times the energy (the family's share of the
-    /// bodies' volume; @p energy: energy_and_volume()); returns the families
-    /// refused and the energy the others remove (J), over all ranks.
-    std::pair<unsigned int, double>
+    /// bodies' volume; @p energy: energy_and_volume()), or would shift its
+    /// body's centre of mass at the end time by more than its share of
+    /// "Position tolerance".
+    CoarseningLimit
     limit_coarsening(const std::pair<double, double> &energy) const;
 
     /// With an "Error tolerance" delta: flags for refinement the cells of
@@ -227,10 +247,11 @@ namespace dyncontact
     double       front_widening       = 0.;
     double       coarsening_tolerance = 0.;
     double       error_tolerance      = 0.;
+    double       position_tolerance   = 0.;
     /// "Error tolerance split" = by volume (else global)
     bool split_by_volume = false;
     /// limit_coarsening()'s result of the last marking
-    mutable std::pair<unsigned int, double> coarsening_limited;
+    mutable CoarseningLimit coarsening_limited;
     /// mark_by_tolerance()'s result of the last marking
     mutable std::pair<double, unsigned int> tolerance_marked;
     /// whether the warning of a widening beyond the mesh was printed

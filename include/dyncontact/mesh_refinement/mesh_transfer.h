@@ -18,11 +18,16 @@ namespace dyncontact
     double energy_change = 0.;
     /// Largest penetration of K_h they left before the projection (m).
     double penetration = 0.;
-    /// Families of cells whose coarsening "Coarsening tolerance" refused.
+    /// Families of cells whose coarsening "Coarsening tolerance" or
+    /// "Position tolerance" refused.
     unsigned int coarsening_refused = 0;
     /// Energy of what the accepted coarsening removed (J), in the norm
     /// 1/2 ||v||^2_{L2(rho)} + 1/2 a(u, u) of the difference.
     double coarsening_removed = 0.;
+    /// With a "Position tolerance": the sum over the accepted families of
+    /// the estimated shift of their body's centre of mass at the end time
+    /// (m; CoarseningLimit::moved).
+    double coarsening_moved = 0.;
     /// With an "Error tolerance": the largest estimated relative error
     /// sqrt(sum eta_K / E) at an adaptation (0: none since the last row).
     double       estimated_error       = 0.;
@@ -38,9 +43,11 @@ namespace dyncontact
     add(const double energy, const double transfer_penetration);
 
     /// One adaptation's coarsening: @p refused families refused, @p removed
-    /// J removed by the others.
+    /// J removed by the others, which shift their bodies by @p moved m.
     void
-    add_coarsening(const unsigned int refused, const double removed);
+    add_coarsening(const unsigned int refused,
+                   const double       removed,
+                   const double       moved);
 
     /// One transfer changed a body's momentum by @p momentum and its mean
     /// displacement by @p displacement at most.
