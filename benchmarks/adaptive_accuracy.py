@@ -10,7 +10,9 @@ tools/study.py runs the uniform meshes of levels 1 to 5 (h alone, the same
 tau) and the adaptive run (levels 1 to 4) as given and with each Mesh
 refinement/Coarsening tolerance of --tolerances, with each Mesh
 refinement/Position tolerance (m) of --position-tolerances, by the
-criterion energy error instead of Kelly's, and, marked by a tolerance instead of the
+criterion energy error instead of Kelly's, with the criterion curved
+boundary added (to Kelly's, to energy error, and to the split by volume
+with delta 0.4), and, marked by a tolerance instead of the
 fractions, with each Mesh refinement/Error tolerance of --error-tolerances
 (the middle one also adapting every 4 steps instead of 2) and of
 --volume-tolerances with Error tolerance split = by volume, all compared with the uniform level-5 run. For each
@@ -22,7 +24,7 @@ over time), of the contact-force error (largest over time / peak) and of the pos
 difference in steps, and the ratio of the run times (wall time less the
 comparisons).
 
-Usage, from the repository's top folder after tools/setup.sh (about 15
+Usage, from the repository's top folder after tools/setup.sh (about 20
 minutes on one core):
     benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]
         [--position-tolerances 1e-3,1e-4] [--error-tolerances 0.2,0.1,0.05]
@@ -85,6 +87,17 @@ for t in tolerances:
                 "tolerance %s:Mesh refinement/Coarsening tolerance=%s" % (t, t)]
 command += ["--adaptive-variant",
             "energy error:Mesh refinement/Criteria=energy error, contact zone"]
+command += ["--adaptive-variant",
+            "curved boundary:Mesh refinement/Criteria=kelly velocity, "
+            "contact zone, curved boundary"]
+command += ["--adaptive-variant",
+            "curved boundary and energy error:Mesh refinement/Criteria=energy "
+            "error, contact zone, curved boundary"]
+command += ["--adaptive-variant",
+            "curved boundary and delta 0.4 by volume:Mesh refinement/"
+            "Criteria=kelly velocity, contact zone, curved boundary;Mesh "
+            "refinement/Error tolerance=0.4;Mesh refinement/Error tolerance "
+            "split=by volume"]
 for t in position_tolerances:
     command += ["--adaptive-variant",
                 "position %s:Mesh refinement/Position tolerance=%s" % (t, t)]

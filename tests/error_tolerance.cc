@@ -108,10 +108,7 @@ main(int argc, char **argv)
       // resumed from a checkpoint at t = 1 s: the same marking after it
       const auto split = [&](const double end, const bool resume) {
         return bar_prm(2, "N-CS++", 10, 0.01, end, s.str()) +
-               "set Output directory = resumed\n"
-               "subsection Checkpointing\n  set Interval in steps = 100\n"
-               "  set Resume = " +
-               (resume ? "true" : "false") + "\nend\n";
+               "set Output directory = resumed\n" + checkpointing(100, resume);
       };
       run(split(1., false));
       const Statistics resumed = run(split(2.5, true));

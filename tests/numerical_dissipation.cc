@@ -151,10 +151,8 @@ main(int argc, char **argv)
   {
     auto prm = [&](const double end_time, const bool resume) {
       return bar_prm(2, "N-CS++", cells, tau, end_time) + theta_prm(theta) +
-             "set Output directory = results-theta-split\n"
-             "subsection Checkpointing\n  set Interval in steps = 80\n"
-             "  set Resume = " +
-             (resume ? "true" : "false") + "\nend\n";
+             "set Output directory = results-theta-split\n" +
+             checkpointing(80, resume);
     };
     run(prm(1.25, false));
     const Statistics resumed    = run(prm(2.5, true));

@@ -85,11 +85,8 @@ main(int argc, char **argv)
 
   // resumed from a checkpoint at t = 1.5 s
   const auto split = [&](const double end, const bool resume) {
-    return prm(tolerance, end) +
-           "set Output directory = resumed\n"
-           "subsection Checkpointing\n  set Interval in steps = 48\n"
-           "  set Resume = " +
-           (resume ? "true" : "false") + "\nend\n";
+    return prm(tolerance, end) + "set Output directory = resumed\n" +
+           checkpointing(48, resume);
   };
   run(split(1.5, false));
   const Statistics resumed = run(split(3., true));

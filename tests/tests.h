@@ -124,6 +124,17 @@ namespace testing
     return s.str();
   }
 
+  /// "subsection Checkpointing": a checkpoint every @p steps steps, and
+  /// whether the run resumes from the last one (the tests that split a run
+  /// at a checkpoint).
+  inline std::string
+  checkpointing(const unsigned int steps, const bool resume)
+  {
+    return "subsection Checkpointing\n  set Interval in steps = " +
+           std::to_string(steps) +
+           "\n  set Resume = " + (resume ? "true" : "false") + "\nend\n";
+  }
+
   /// Entries for the tests that compare two runs (another preconditioner,
   /// rank count, triangulation, a rotated or resumed run) or check a
   /// conservation law closer than the default Step solver tolerance (1e-7

@@ -39,7 +39,7 @@ namespace dyncontact
                                   "refinement/Error tolerance");
             std::string indicators;
             for (const auto &name : criterion_names)
-              if (name != "contact zone")
+              if (name != "contact zone" && name != "curved boundary")
                 indicators += (indicators.empty() ? "" : ", ") + name;
             if (!indicators.empty())
               unread.emplace_back(
@@ -48,7 +48,7 @@ namespace dyncontact
                   " are not used: the cells are marked by Mesh "
                   "refinement/Error tolerance (its estimate is the "
                   "criterion energy error's); only the flags of contact "
-                  "zone are");
+                  "zone and curved boundary are");
           }
         else
           unread.emplace_back("Mesh refinement/Error tolerance split",

@@ -131,7 +131,7 @@ namespace dyncontact
       "that the estimated error in the energy norm relative to sqrt(E), "
       "sqrt(S / E), stays about delta. Refine fraction, Coarsen fraction "
       "and the indicators of Criteria are then not used (the contact "
-      "zone's flags are). Dimensionless, 0 to 1; 0: the fractions. "
+      "zone's and the curved boundary's flags are). Dimensionless, 0 to 1; 0: the fractions. "
       "Statistics columns estimated_error (sqrt(S / E) at the adaptations, "
       "before they refine) and cells_above_tolerance (cells the tolerance "
       "would refine that are at Maximum level) when > 0.");
@@ -559,6 +559,9 @@ namespace dyncontact
   MeshAdaptor<dim>::mark_contact_zone() const
   {
     contact_zone->tag_additional_cells();
+    for (unsigned int c = 0; c < criteria.size(); ++c)
+      if (criterion_names[c] == "curved boundary")
+        criteria[c]->tag_additional_cells();
   }
 
 

@@ -175,7 +175,8 @@ namespace dyncontact
     void
     mark_cells(Triangulation<dim> &triangulation) const;
 
-    /// Flags the cells of the contact zone of the current state (the
+    /// Flags the cells of the contact zone of the current state, and those
+    /// of the criterion curved boundary if Criteria names it (the
     /// refinement before t = 0).
     void
     mark_contact_zone() const;
