@@ -56,6 +56,9 @@ namespace dyncontact
                               "refinement/Error tolerance = 0)");
         return unread;
       }
+    // (curved boundary refines before t = 0 with Initial contact
+    // refinements)
+    const bool curved = curved_boundary() != nullptr;
     for (const std::string entry : {"Refinement interval",
                                     "Refine fraction",
                                     "Coarsen fraction",
@@ -66,7 +69,8 @@ namespace dyncontact
                                     "Minimum level",
                                     "Front widening",
                                     "Criteria"})
-      if (entry != std::string("Refinement interval") || interval > 0)
+      if ((entry != std::string("Refinement interval") || interval > 0) &&
+          (entry != std::string("Criteria") || !curved))
         unread.emplace_back("Mesh refinement/" + entry, why);
     if (initial_refinements == 0)
       for (const std::string entry : {"Maximum level", "Contact zone"})

@@ -20,8 +20,9 @@ namespace dyncontact
      * cells are (bi/tri)linear in their vertices, so that a coarse cell
      * there cuts a segment off the curve: a ball's mass is 0.8 % below the
      * circle's on the Hertz drop's mesh as the fractions leave it, and
-     * its rebound follows. Also before t = 0, with Initial contact
-     * refinements.
+     * its rebound follows. Before t = 0 (after Initial contact
+     * refinements) the cells are refined to Maximum level, one level a
+     * round, when the mesh adapts during the run or before it.
      */
     template <int dim>
     class CurvedBoundary : public Interface<dim>

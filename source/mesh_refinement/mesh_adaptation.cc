@@ -1,11 +1,14 @@
 // MeshAdaptor's execution of a mesh adaptation: the refinement of the
-// initial contact zone, the adaptation after a step and its record (the
-// marking is in mesh_adaptor.cc).
+// initial contact zone and curved boundary, the adaptation after a step and
+// its record, kept in checkpoints (the marking is in mesh_adaptor.cc).
 
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/problem/discrete_problem.h>
 #include <dyncontact/scenes/interface.h>
+#include <dyncontact/time_stepping/simulation_control.h>
 
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 namespace dyncontact
@@ -44,6 +47,56 @@ namespace dyncontact
         problem.get_triangulation().execute_coarsening_and_refinement();
         problem.setup(scene, timer);
       }
+    // then the curved boundary's cells to Maximum level, a level a round
+    if (const auto *curved = curved_boundary())
+      for (unsigned int k = 0; k < max_level; ++k)
+        {
+          problem.interpolate_initial_values(scene);
+          curved->tag_additional_cells();
+          if (!problem.check_flagged_mesh_fits_in_memory(
+                scene,
+                memory_remedy(true),
+                "the mesh refined at the curved boundary"))
+            break; // (all at Maximum level)
+          problem.get_triangulation().execute_coarsening_and_refinement();
+          problem.setup(scene, timer);
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  MeshAdaptor<dim>::save(std::map<std::string, std::string> &state) const
+  {
+    record.save(state);
+    if (position_tolerance > 0.)
+      {
+        std::ostringstream s;
+        s << std::setprecision(17) << this->get_control().get_end_time();
+        state["position_tolerance_end_time"] = s.str();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MeshAdaptor<dim>::load(const std::map<std::string, std::string> &state)
+  {
+    record.load(state);
+    const auto   saved = state.find("position_tolerance_end_time");
+    const double end   = this->get_control().get_end_time();
+    if (position_tolerance > 0. && saved != state.end() &&
+        std::stod(saved->second) != end)
+      this->get_pcout()
+        << "   warning: Mesh refinement/Position tolerance: the run resumes "
+           "with End time = "
+        << end << " instead of " << std::stod(saved->second)
+        << ": the coarsening before the checkpoint was limited for the "
+           "shift at the earlier End time, and the tolerance does not bound "
+           "the whole run's estimate."
+        << std::endl;
   }
 
 
@@ -84,4 +137,12 @@ namespace dyncontact
   MeshAdaptor<2>::adapt(DiscreteProblem<2> &, const double, TimerOutput &);
   template bool
   MeshAdaptor<3>::adapt(DiscreteProblem<3> &, const double, TimerOutput &);
+  template void
+  MeshAdaptor<2>::save(std::map<std::string, std::string> &) const;
+  template void
+  MeshAdaptor<3>::save(std::map<std::string, std::string> &) const;
+  template void
+  MeshAdaptor<2>::load(const std::map<std::string, std::string> &);
+  template void
+  MeshAdaptor<3>::load(const std::map<std::string, std::string> &);
 } // namespace dyncontact

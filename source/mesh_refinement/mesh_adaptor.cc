@@ -110,7 +110,8 @@ namespace dyncontact
       "step over T), the families of the largest shifts keep their cells "
       "until it does not. A wave that carries a body's motion then stays "
       "fine. The estimate leaves out the hanging nodes' constraints on the "
-      "neighbours and the contact forces' response. In m, 0 or more; 0: no "
+      "neighbours and the contact forces' response; a resume that changes "
+      "End time is warned of. In m, 0 or more; 0: no "
       "limit. Statistics columns coarsening_refused (families refused by "
       "this or Coarsening tolerance) and coarsening_moved (m, the accepted "
       "shifts' sums over the bodies) when > 0.");
@@ -559,9 +560,19 @@ namespace dyncontact
   MeshAdaptor<dim>::mark_contact_zone() const
   {
     contact_zone->tag_additional_cells();
-    for (unsigned int c = 0; c < criteria.size(); ++c)
-      if (criterion_names[c] == "curved boundary")
-        criteria[c]->tag_additional_cells();
+  }
+
+
+
+  template <int dim>
+  const MeshRefinement::Interface<dim> *
+  MeshAdaptor<dim>::curved_boundary() const
+  {
+    if (interval > 0 || initial_refinements > 0)
+      for (unsigned int c = 0; c < criteria.size(); ++c)
+        if (criterion_names[c] == "curved boundary")
+          return criteria[c].get();
+    return nullptr;
   }
 
 

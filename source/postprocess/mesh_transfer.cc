@@ -74,11 +74,14 @@ namespace dyncontact
                 << tolerance
                 << (adaptor.coarsening_limit_of_error_tolerance() ? ")" : "")
                 << (adaptor.get_position_tolerance() > 0. ?
-                      " or Position tolerance" :
-                      "")
-                << " (their coarsening would have removed more than their "
-                   "share); the parts removed by the others: "
-                << removed << " J in all\n";
+                      " or Position tolerance (their coarsening would have "
+                      "removed more than their share of the energy, or "
+                      "moved their body by more than the share of the "
+                      "motion)" :
+                      " (their coarsening would have removed more than "
+                      "their share)")
+                << "; the parts removed by the others: " << removed
+                << " J in all\n";
           }
         if (adaptor.get_position_tolerance() > 0. &&
             s.has_column("coarsening_moved"))

@@ -159,27 +159,28 @@ namespace dyncontact
       record = MeshTransfer();
     }
 
-    /// The record, for a checkpoint.
+    /// The record, for a checkpoint; with a Position tolerance also the End
+    /// time its estimates were made for (a resume to another End time is
+    /// warned of).
     void
-    save(std::map<std::string, std::string> &state) const
-    {
-      record.save(state);
-    }
+    save(std::map<std::string, std::string> &state) const;
     void
-    load(const std::map<std::string, std::string> &state)
-    {
-      record.load(state);
-    }
+    load(const std::map<std::string, std::string> &state);
 
     /// Flags the cells of @p triangulation by the criteria (collective).
     void
     mark_cells(Triangulation<dim> &triangulation) const;
 
-    /// Flags the cells of the contact zone of the current state, and those
-    /// of the criterion curved boundary if Criteria names it (the
+    /// Flags the cells of the contact zone of the current state (the
     /// refinement before t = 0).
     void
     mark_contact_zone() const;
+
+    /// The criterion curved boundary if Criteria names it and the mesh
+    /// adapts during the run or before it (Initial contact refinements);
+    /// nullptr otherwise.
+    const MeshRefinement::Interface<dim> *
+    curved_boundary() const;
 
     /// The entries of subsection Mesh refinement that a run of the static
     /// problem (@p is_static) or with these settings does not read: (full
