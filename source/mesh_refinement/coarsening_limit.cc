@@ -265,13 +265,17 @@ namespace dyncontact
                   dq += energy.integral(cu, rho);
                   dp += energy.integral(cv, rho);
                 }
-              prolongation.vmult(tmp, pu);
-              cu -= tmp;
-              prolongation.vmult(tmp, pv);
-              cv -= tmp;
-              const auto [e, vol] = energy.of(child, cu, cv);
-              removed += e;
-              family_volume += vol;
+              // (the removed part's energy: only for the energy's limit)
+              if (tolerance > 0.)
+                {
+                  prolongation.vmult(tmp, pu);
+                  cu -= tmp;
+                  prolongation.vmult(tmp, pv);
+                  cv -= tmp;
+                  const auto [e, vol] = energy.of(child, cu, cv);
+                  removed += e;
+                  family_volume += vol;
+                }
             }
           if (tolerance > 0. &&
               removed > tolerance * total * family_volume / volume)

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <numeric>
 #include <sstream>
 
 namespace dyncontact
@@ -59,14 +60,15 @@ namespace dyncontact
         const double       delta     = adaptor.get_error_tolerance();
         std::ostringstream out;
         out << std::setprecision(6);
+        // a column's sum over the run
+        const auto total = [&s](const std::string &column) {
+          const std::vector<double> &values = s.column(column);
+          return std::accumulate(values.begin(), values.end(), 0.);
+        };
         if (tolerance > 0. && s.has_column("coarsening_refused"))
           {
-            double refused = 0., removed = 0.;
-            for (const double r : s.column("coarsening_refused"))
-              refused += r;
-            for (const double r : s.column("coarsening_removed"))
-              removed += r;
-            out << "coarsening: " << refused << " families kept by Mesh "
+            out << "coarsening: " << total("coarsening_refused")
+                << " families kept by Mesh "
                 << "refinement/"
                 << (adaptor.coarsening_limit_of_error_tolerance() ?
                       "Error tolerance (the coarsening limit delta^2/4 = " :
@@ -80,28 +82,22 @@ namespace dyncontact
                       "motion)" :
                       " (their coarsening would have removed more than "
                       "their share)")
-                << "; the parts removed by the others: " << removed
-                << " J in all\n";
+                << "; the parts removed by the others: "
+                << total("coarsening_removed") << " J in all\n";
           }
         if (adaptor.get_position_tolerance() > 0. &&
             s.has_column("coarsening_moved"))
           {
-            double moved = 0.;
-            for (const double m : s.column("coarsening_moved"))
-              moved += m;
             out << "coarsening by the bodies' motion: Mesh "
                    "refinement/Position tolerance = "
                 << adaptor.get_position_tolerance()
                 << " m; the accepted coarsening's estimated shift of the "
                    "bodies' centres of mass at the end time, as in free "
                    "flight: "
-                << moved << " m in all";
+                << total("coarsening_moved") << " m in all";
             if (tolerance == 0.)
               {
-                double refused = 0.;
-                for (const double r : s.column("coarsening_refused"))
-                  refused += r;
-                out << "; " << refused
+                out << "; " << total("coarsening_refused")
                     << " families kept (their coarsening would have shifted "
                        "their body by more than their share)";
               }

@@ -167,11 +167,14 @@ namespace dyncontact
         step_matrix->inertia_ratio =
           largest_ratio(S_diagonal, &M_diagonal, comm);
         // (the bound of S's Jacobi-scaled condition number needs a diagonal
-        // D <= M: a lumped mass, or a blended mass's lumped part)
+        // D <= M: a lumped mass, whose ratio that is, or a blended mass's
+        // lumped part)
         if (!matrix_free())
           solver.set_matrix(S,
                             nullptr,
-                            largest_ratio(S_diagonal, system.M_lower, comm));
+                            system.lumped_mass() ?
+                              step_matrix->inertia_ratio :
+                              largest_ratio(S_diagonal, system.M_lower, comm));
       }
     return step_matrix;
   }
