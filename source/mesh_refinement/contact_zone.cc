@@ -1,5 +1,5 @@
 // The contact zone: the cells at slave nodes whose current gap g_p - (C u)_p
-// is below the contact-zone distance, and at the master nodes of their
+// is at most the contact-zone distance, and at the master nodes of their
 // images, are refined (on both bodies, up to the maximum level) whatever
 // the indicators say.
 
@@ -29,9 +29,10 @@ namespace dyncontact
                           "0",
                           Patterns::Double(0.),
                           "A slave node is in the contact zone when its "
-                          "current gap is below this distance or below two "
-                          "cell sizes at the node, whichever is larger, in "
-                          "m; 0: two cell sizes.");
+                          "current gap is at most this distance (up to a "
+                          "round-off of 1e-10 of it, so that a gap equal to "
+                          "the distance is in) or below two cell sizes at "
+                          "the node, in m; 0: two cell sizes.");
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -66,7 +67,9 @@ namespace dyncontact
         for (unsigned int p = 0; p < rows.size(); ++p)
           {
             const double size = std::pow(rows.rows[p].weight, 1. / (dim - 1));
-            if (-violation[p] < std::max(distance, 2. * size))
+            // (a gap equal to the distance is in, also after round-off)
+            const double gap = -violation[p];
+            if (gap <= (1. + 1e-10) * distance || gap < 2. * size)
               {
                 marks(rows.rows[p].entries[0].first) += 1.;
                 for (const auto &[dof0, N] : rows.rows[p].master_nodes)

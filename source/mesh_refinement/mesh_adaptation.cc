@@ -37,8 +37,8 @@ namespace dyncontact
                     std::string("no cell was refined") :
                     "only " + std::to_string(k) + " of them refined cells") +
                    ": no slave node is in the contact zone at t = 0 "
-                   "(its gap below Mesh refinement/Contact zone/Distance "
-                   "or two cell sizes), as at the start of an impact "
+                   "(its gap at most Mesh refinement/Contact zone/Distance "
+                   "or below two cell sizes), as at the start of an impact "
                    "across a gap, or its cells are at Mesh "
                    "refinement/Maximum level (now "
               << max_level << ")." << std::endl;
