@@ -12,7 +12,9 @@ refinement/Coarsening tolerance of --tolerances, with each Mesh
 refinement/Position tolerance (m) of --position-tolerances, by the
 criterion energy error instead of Kelly's, with the criterion curved
 boundary added (to Kelly's, to energy error, and to the split by volume
-with delta 0.4), and, marked by a tolerance instead of the
+with delta 0.4), by velocity jump with curved boundary and the contact
+zone (Front widening 1; and Front widening 2 with Position tolerance
+1e-4 m, every 2 and every 8 steps), and, marked by a tolerance instead of the
 fractions, with each Mesh refinement/Error tolerance of --error-tolerances
 (the middle one also adapting every 4 steps instead of 2) and of
 --volume-tolerances with Error tolerance split = by volume, all compared with the uniform level-5 run. For each
@@ -24,13 +26,13 @@ over time), of the contact-force error (largest over time / peak) and of the pos
 difference in steps, and the ratio of the run times (wall time less the
 comparisons).
 
-Usage, from the repository's top folder after tools/setup.sh (about 20
+Usage, from the repository's top folder after tools/setup.sh (about 28
 minutes on one core):
     benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]
         [--position-tolerances 1e-3,1e-4] [--error-tolerances 0.2,0.1,0.05]
         [--volume-tolerances 0.4,0.2]"""
 import options
-import csv
+import study_ratios
 import os
 import subprocess
 import sys
@@ -98,6 +100,16 @@ command += ["--adaptive-variant",
             "Criteria=kelly velocity, contact zone, curved boundary;Mesh "
             "refinement/Error tolerance=0.4;Mesh refinement/Error tolerance "
             "split=by volume"]
+jump = ("Mesh refinement/Criteria=velocity jump, contact zone, curved "
+        "boundary;Mesh refinement/Front widening=")
+command += ["--adaptive-variant",
+            "velocity jump and curved boundary:" + jump + "1"]
+command += ["--adaptive-variant",
+            "velocity jump widened 2, curved boundary, position 1e-4:" +
+            jump + "2;Mesh refinement/Position tolerance=1e-4"]
+command += ["--adaptive-variant",
+            "the same every 8:" + jump + "2;Mesh refinement/Position "
+            "tolerance=1e-4;Mesh refinement/Refinement interval=8"]
 for t in position_tolerances:
     command += ["--adaptive-variant",
                 "position %s:Mesh refinement/Position tolerance=%s" % (t, t)]
@@ -118,30 +130,5 @@ print(result.stdout)
 if result.returncode != 0:
     sys.exit("adaptive_accuracy: the study failed:\n" + result.stderr)
 
-rows = list(csv.DictReader(open(os.path.join(work, "study", "study.csv"))))
-uniform = [r for r in rows if r["configuration"].startswith("uniform")
-           and int(r["mesh_level"]) == 4][0]
-tau = float(uniform["tau"])
-reference = [r for r in rows if r["configuration"].startswith("uniform")
-             and int(r["mesh_level"]) == 5][0]
-print("The uniform level-4 run's estimated errors: energy %.3g, force %.3g, "
-      "position %.3g m; the level-5 reference's own: %.3g, %.3g, %.3g m "
-      "(a ratio whose error is near the reference's is not resolved)" % tuple(
-          float(r["estimated_" + k]) for r in (uniform, reference)
-          for k in ("energy_max", "force_max", "position_max")))
-print("Against the uniform level-4 run (%s DoFs, %.3g s):" %
-      (uniform["dofs"], float(uniform["time"])))
-print("%-26s %8s %10s %10s %10s %16s %10s" % (
-    "configuration", "DoFs", "energy", "force", "position", "release/steps",
-    "time"))
-for r in rows:
-    if not r["configuration"].startswith("adaptive") or r["level"] != "0":
-        continue
-    ratio = lambda key: float(r["estimated_" + key]) / float(uniform["estimated_" + key])
-    print("%-26s %8s %10.2f %10.2f %10.2f %16.1f %10.2f" % (
-        r["configuration"], r["dofs"], ratio("energy_max"), ratio("force_max"),
-        ratio("position_max"), float(r["release"]) / tau,
-        float(r["time"]) / float(uniform["time"])))
-print("(ratios of the estimated errors, adaptive over uniform; release: "
-      "the difference from the level-5 run in steps; time: ratio of the "
-      "wall times less the comparisons)")
+study_ratios.print_ratios(os.path.join(work, "study", "study.csv"),
+                          lambda level: 4 + level)

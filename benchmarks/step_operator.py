@@ -5,7 +5,8 @@ per polynomial degree, on the 3D bar impact of benchmarks/scaling.py
 tau = h/2c with h the cell size, 8 free and 8 contact steps, no VTU): the
 same number of nodes for every p (N = 120/p cells along, N/5 across, about
 2.3e5 DoFs; --cells M sets 120 to M; --tau-ratio R sets tau = R h/c, and
-the run to 4 free and 4 contact steps if R > 1). For each p it runs the
+the run to 4 free and 4 contact steps if R > 1; --mass blended or
+consistent sets Time integration/Mass matrix instead of lumped). For each p it runs the
 assembled S ('Preconditioner = automatic': Jacobi, or AMG where S is far
 from its mass), the matrix-free S with Jacobi and, for p >= 2, the
 matrix-free S with the p-multigrid ('Preconditioner = multigrid'). For each
@@ -19,7 +20,7 @@ matrix-free / assembled and multigrid / assembled measured in this run, and
 each contact step per DoF against the assembled p = 1 step.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/step_operator.py [build/dyncontact] [--cells M]
-                                [--tau-ratio R] [p ...]"""
+                                [--tau-ratio R] [--mass M] [p ...]"""
 import csv
 import os
 import re
@@ -31,6 +32,9 @@ from options import take_option
 arguments = sys.argv[1:]
 cells_p1 = take_option(arguments, "--cells", int, 120)
 tau_ratio = take_option(arguments, "--tau-ratio", float, 0.5)
+mass = take_option(arguments, "--mass", str, "lumped")
+if mass not in ("lumped", "blended", "consistent"):
+    sys.exit("step_operator: --mass must be lumped, blended or consistent")
 steps = 8 if tau_ratio <= 1 else 4
 executable = arguments[0] if arguments else "build/dyncontact"
 degrees = [int(p) for p in arguments[1:]] or [1, 2, 3]
@@ -42,8 +46,9 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
 def run(p, step_matrix, preconditioner):
     cells = cells_p1 // p
     tau = tau_ratio / cells
-    directory = "results-step-operator/bar3d-p%d-%s-%s-%g" % (
-        p, step_matrix, preconditioner, tau_ratio)
+    directory = "results-step-operator/bar3d-p%d-%s-%s-%g%s" % (
+        p, step_matrix, preconditioner, tau_ratio,
+        "" if mass == "lumped" else "-" + mass)
     prm = directory + ".prm"
     with open(prm, "w") as f:
         f.write("""set Dimension = 3
@@ -61,6 +66,7 @@ subsection Time integration
   set Scheme = N-CS++
   set Time step = %.17g
   set End time = %.17g
+  set Mass matrix = %s
 end
 subsection Contact solver
   set Step matrix = %s
@@ -69,8 +75,8 @@ end
 subsection Output
   set Write vtu = false
 end
-""" % (p, directory, cells, steps * tau, tau, 2 * steps * tau, step_matrix,
-       preconditioner))
+""" % (p, directory, cells, steps * tau, tau, 2 * steps * tau, mass,
+       step_matrix, preconditioner))
     result = subprocess.run(["/usr/bin/time", "-v", executable, prm], env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             text=True, check=True)
@@ -98,7 +104,7 @@ end
 choices = [("assembled", "automatic"), ("matrix-free", "automatic"),
            ("matrix-free", "multigrid")]
 results = {}
-print("tau = %g h/c" % tau_ratio)
+print("tau = %g h/c, %s mass" % (tau_ratio, mass))
 print("%2s %12s %8s %9s %9s %12s %7s %11s %8s" %
       ("p", "step matrix", "DoFs", "set-up", "c. step", "us/(DoF st)",
        "CG/st", "prec.", "RSS/DoF"))
