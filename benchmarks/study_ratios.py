@@ -33,8 +33,9 @@ def print_ratios(study_csv, finest_of_level):
         print("Adaptive runs of finest level %d against the uniform level-%d "
               "run (%s DoFs, %.3g s):" % (finest, finest, u["dofs"],
                                           float(u["time"])))
-        print("%-30s %8s %10s %10s %10s %16s %10s" % (
-            "configuration", "DoFs", "energy", "force", "position",
+        width = max(len(r["configuration"]) for r in rows)
+        print("%-*s %8s %10s %10s %10s %16s %10s" % (
+            width, "configuration", "DoFs", "energy", "force", "position",
             "release/steps", "time"))
         for r in rows:
             if not r["configuration"].startswith("adaptive") or \
@@ -46,8 +47,8 @@ def print_ratios(study_csv, finest_of_level):
                         float(u["estimated_" + key]))
             release = "%.0f / %.0f" % (float(r["release"]) / tau,
                                        float(u["release"]) / tau)
-            print("%-30s %8s %10.2f %10.2f %10.2f %16s %10.2f" % (
-                r["configuration"], r["dofs"], ratio("energy_max"),
+            print("%-*s %8s %10.2f %10.2f %10.2f %16s %10.2f" % (
+                width, r["configuration"], r["dofs"], ratio("energy_max"),
                 ratio("force_max"), ratio("position_max"), release,
                 float(r["time"]) / float(u["time"])))
     print("(ratios of the estimated errors, adaptive over uniform; DoFs: the "
