@@ -19,48 +19,50 @@ namespace dyncontact
                                                 TimerOutput          &timer)
   {
     const Scene<dim> &scene = this->get_scene();
+    // one round: tag() flags cells, and the mesh is refined where they fit
+    // in memory; false where no cell was flagged (or they would not fit)
+    const auto refine_round = [&](const auto &tag, const char *what) {
+      tag();
+      if (!problem.check_flagged_mesh_fits_in_memory(scene,
+                                                     memory_remedy(true),
+                                                     what))
+        return false;
+      problem.get_triangulation().execute_coarsening_and_refinement();
+      problem.setup(scene, timer);
+      return true;
+    };
     for (unsigned int k = 0; k < initial_refinements; ++k)
-      {
-        problem.interpolate_initial_values(scene);
-        mark_contact_zone();
-        if (!problem.check_flagged_mesh_fits_in_memory(scene,
-                                                       memory_remedy(true),
-                                                       "the mesh refined at "
-                                                       "the contact zone"))
-          {
-            // (nothing more would change)
-            this->get_pcout()
-              << "   warning: Mesh refinement/Initial contact refinements "
-                 "= "
-              << initial_refinements << ": "
-              << (k == 0 ?
-                    std::string("no cell was refined") :
-                    "only " + std::to_string(k) + " of them refined cells") +
-                   ": no slave node is in the contact zone at t = 0 "
-                   "(its gap at most Mesh refinement/Contact zone/Distance "
-                   "or below two cell sizes), as at the start of an impact "
-                   "across a gap, or its cells are at Mesh "
-                   "refinement/Maximum level (now "
-              << max_level << ")." << std::endl;
-            break;
-          }
-        problem.get_triangulation().execute_coarsening_and_refinement();
-        problem.setup(scene, timer);
-      }
+      if (!refine_round(
+            [&]() {
+              // (the zone is of the initial state's gaps)
+              problem.interpolate_initial_values(scene);
+              mark_contact_zone();
+            },
+            "the mesh refined at the contact zone"))
+        {
+          // (nothing more would change)
+          this->get_pcout()
+            << "   warning: Mesh refinement/Initial contact refinements "
+               "= "
+            << initial_refinements << ": "
+            << (k == 0 ?
+                  std::string("no cell was refined") :
+                  "only " + std::to_string(k) + " of them refined cells") +
+                 ": no slave node is in the contact zone at t = 0 "
+                 "(its gap at most Mesh refinement/Contact zone/Distance "
+                 "or below two cell sizes), as at the start of an impact "
+                 "across a gap, or its cells are at Mesh "
+                 "refinement/Maximum level (now "
+            << max_level << ")." << std::endl;
+          break;
+        }
     // then the curved boundary's cells to Maximum level, a level a round
+    // (by the geometry alone: the state is interpolated at the start)
     if (const auto *curved = curved_boundary())
       for (unsigned int k = 0; k < max_level; ++k)
-        {
-          problem.interpolate_initial_values(scene);
-          curved->tag_additional_cells();
-          if (!problem.check_flagged_mesh_fits_in_memory(
-                scene,
-                memory_remedy(true),
-                "the mesh refined at the curved boundary"))
-            break; // (all at Maximum level)
-          problem.get_triangulation().execute_coarsening_and_refinement();
-          problem.setup(scene, timer);
-        }
+        if (!refine_round([&]() { curved->tag_additional_cells(); },
+                          "the mesh refined at the curved boundary"))
+          break; // (all at Maximum level)
   }
 
 

@@ -33,11 +33,11 @@ namespace dyncontact
                                        "transfer_penetration",
                                        "momentum_transfer",
                                        "displacement_transfer"};
-        if (limit_columns())
-          names.insert(names.end(),
-                       {"coarsening_refused", "coarsening_removed"});
-        else if (position_columns())
+        // (the families refused by either limit)
+        if (limit_columns() || position_columns())
           names.push_back("coarsening_refused");
+        if (limit_columns())
+          names.push_back("coarsening_removed");
         if (position_columns())
           names.push_back("coarsening_moved");
         if (tolerance_columns())
@@ -145,12 +145,10 @@ namespace dyncontact
                     record.penetration,
                     record.momentum_change,
                     record.displacement_change});
-        if (limit_columns())
-          row.insert(row.end(),
-                     {double(record.coarsening_refused),
-                      record.coarsening_removed});
-        else if (position_columns())
+        if (limit_columns() || position_columns())
           row.push_back(record.coarsening_refused);
+        if (limit_columns())
+          row.push_back(record.coarsening_removed);
         if (position_columns())
           row.push_back(record.coarsening_moved);
         // (0 in rows without an adaptation)
