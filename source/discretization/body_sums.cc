@@ -62,6 +62,40 @@ namespace dyncontact
 
 
 
+  template <int dim>
+  void
+  shift_body_means(const SemiDiscreteSystem<dim> &system,
+                   VectorType                    &x,
+                   const std::vector<double>     &means,
+                   const unsigned int             n_bodies,
+                   const MPI_Comm                 communicator)
+  {
+    const std::vector<double> now =
+      body_mean_displacements(system, x, n_bodies, communicator);
+    // the slots with a Dirichlet DoF (a constrained DoF without entries)
+    std::vector<double>               held(3 * n_bodies, 0.);
+    const std::vector<unsigned char> &slots = system.get_owned_dof_slots();
+    const IndexSet                   &owned = system.locally_owned_dofs();
+    const auto                       &constraints = system.get_constraints();
+    for (std::size_t k = 0; k < slots.size(); ++k)
+      {
+        const auto *entries =
+          constraints.get_constraint_entries(owned.nth_index_in_set(k));
+        if (entries != nullptr && entries->empty())
+          held[3 * (slots[k] / dim) + slots[k] % dim] = 1.;
+      }
+    Utilities::MPI::max(held, communicator, held);
+    double *values = x.begin();
+    for (std::size_t k = 0; k < slots.size(); ++k)
+      {
+        const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
+        if (held[slot] == 0.)
+          values[k] += means[slot] - now[slot];
+      }
+  }
+
+
+
   double
   largest_body_change(const std::vector<double> &a,
                       const std::vector<double> &b)
@@ -86,7 +120,12 @@ namespace dyncontact
     const SemiDiscreteSystem<dim> &,                                      \
     const VectorType &,                                                   \
     const unsigned int,                                                   \
-    const MPI_Comm);
+    const MPI_Comm);                                                      \
+  template void shift_body_means(const SemiDiscreteSystem<dim> &,         \
+                                 VectorType &,                            \
+                                 const std::vector<double> &,             \
+                                 const unsigned int,                      \
+                                 const MPI_Comm);
   DYNCONTACT_INSTANTIATE(2)
   DYNCONTACT_INSTANTIATE(3)
 #undef DYNCONTACT_INSTANTIATE

@@ -30,6 +30,14 @@ namespace dyncontact
                               "no criterion of Mesh refinement/Criteria is "
                               "the contact zone, and Initial contact "
                               "refinements = 0");
+        else if (std::find(criterion_names.begin(),
+                           criterion_names.end(),
+                           "contact zone") == criterion_names.end())
+          unread.emplace_back("Mesh refinement/Contact zone/Keep distance",
+                              "it acts at the adaptations during the run, "
+                              "and no criterion of Mesh refinement/Criteria "
+                              "is the contact zone (Initial contact "
+                              "refinements use its Distance only)");
         if (error_tolerance > 0.)
           {
             for (const std::string entry :
@@ -64,6 +72,7 @@ namespace dyncontact
                                     "Coarsen fraction",
                                     "Coarsening tolerance",
                                     "Position tolerance",
+                                    "Keep body motion",
                                     "Error tolerance",
                                     "Error tolerance split",
                                     "Minimum level",
@@ -76,6 +85,8 @@ namespace dyncontact
       for (const std::string entry : {"Maximum level", "Contact zone"})
         unread.emplace_back("Mesh refinement/" + std::string(entry),
                             why + ", and Initial contact refinements = 0");
+    else
+      unread.emplace_back("Mesh refinement/Contact zone/Keep distance", why);
     return unread;
   }
 

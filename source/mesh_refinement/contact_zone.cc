@@ -1,14 +1,17 @@
 // The contact zone: the cells at slave nodes whose current gap g_p - (C u)_p
 // is at most the contact-zone distance, and at the master nodes of their
 // images, are refined (on both bodies, up to the maximum level) whatever
-// the indicators say.
+// the indicators say; the cells within the keep distance of those in
+// contact are not coarsened.
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/discretization/semi_discrete_system.h>
+#include <dyncontact/mesh_refinement/cell_distance.h>
 #include <dyncontact/mesh_refinement/interface.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
+#include <dyncontact/time_stepping/step_operators.h>
 
 #include <cmath>
 
@@ -33,6 +36,17 @@ namespace dyncontact
                           "round-off of 1e-10 of it, so that a gap equal to "
                           "the distance is in) or below two cell sizes at "
                           "the node, in m; 0: two cell sizes.");
+        prm.declare_entry(
+          "Keep distance",
+          "0",
+          Patterns::Double(0.),
+          "No cell within this distance of a cell at a node in contact "
+          "(a slave node of the last step's active set, or a master node "
+          "of its image) is coarsened, in m (the distance of the two "
+          "cells' boxes along the line of their centres): the bodies near "
+          "a lasting contact keep the cells that decide its force, where "
+          "the coarsening's transfers would perturb it. 0 or more; 0: "
+          "only the contact zone's own cells are kept.");
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -42,7 +56,8 @@ namespace dyncontact
       {
         prm.enter_subsection("Mesh refinement");
         prm.enter_subsection("Contact zone");
-        distance = prm.get_double("Distance");
+        distance      = prm.get_double("Distance");
+        keep_distance = prm.get_double("Keep distance");
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -57,30 +72,46 @@ namespace dyncontact
         const MPI_Comm                 comm   = this->get_mpi_communicator();
         const ContactRows             &rows   = this->get_contact().get_rows();
         const auto &row_operator = this->get_contact().get_row_operator();
-        VectorType  marks;
+        // (and the nodes in contact, for the keep distance)
+        VectorType marks, touching;
         marks.reinit(system.locally_owned_dofs(),
                      row_operator.ghost_set(),
                      comm,
                      true);
+        if (keep_distance > 0.)
+          touching.reinit(marks);
         const auto violation =
           row_operator.constraint_values(this->get_solution());
+        const std::vector<char> &active = this->get_step_report().active;
+        const auto mark = [&](VectorType &v, const unsigned int p) {
+          v(rows.rows[p].entries[0].first) += 1.;
+          for (const auto &[dof0, N] : rows.rows[p].master_nodes)
+            v(dof0) += 1.;
+        };
         for (unsigned int p = 0; p < rows.size(); ++p)
           {
             const double size = std::pow(rows.rows[p].weight, 1. / (dim - 1));
             // (a gap equal to the distance is in, also after round-off)
             const double gap = -violation[p];
             if (gap <= (1. + 1e-10) * distance || gap < 2. * size)
-              {
-                marks(rows.rows[p].entries[0].first) += 1.;
-                for (const auto &[dof0, N] : rows.rows[p].master_nodes)
-                  marks(dof0) += 1.;
-              }
+              mark(marks, p);
+            // (the report is the last step's, on these rows; none before
+            // the first step)
+            if (keep_distance > 0. && active.size() == rows.size() && active[p])
+              mark(touching, p);
           }
         marks.compress(VectorOperation::add);
         VectorType zone(system.locally_owned_dofs(),
                         system.locally_relevant_dofs(),
                         comm);
         zone = marks;
+        if (keep_distance > 0.)
+          {
+            touching.compress(VectorOperation::add);
+            VectorType in_contact(zone);
+            in_contact = touching;
+            keep_near(in_contact);
+          }
 
         const unsigned int max_level = this->get_mesh_adaptor().get_max_level();
         std::vector<types::global_dof_index> dofs(
@@ -102,7 +133,44 @@ namespace dyncontact
       }
 
     private:
-      double distance = 0.;
+      /// Clears the coarsen flags of the cells within the keep distance of
+      /// a cell with a node of @p in_contact (> 0).
+      void
+      keep_near(const VectorType &in_contact) const
+      {
+        const SemiDiscreteSystem<dim> &system = this->get_system();
+        const auto                    &triangulation =
+          system.get_dof_handler().get_triangulation();
+        std::vector<bool> seeds(triangulation.n_active_cells(), false);
+        std::vector<types::global_dof_index> dofs(
+          system.get_fe().n_dofs_per_cell());
+        unsigned int n_seeds = 0;
+        for (const auto &cell :
+             system.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(dofs);
+              for (const auto &node : system.get_node_system_indices())
+                if (in_contact(dofs[node[0]]) > 0.)
+                  {
+                    seeds[cell->active_cell_index()] = true;
+                    ++n_seeds;
+                    break;
+                  }
+            }
+        if (Utilities::MPI::max(n_seeds, this->get_mpi_communicator()) == 0)
+          return;
+        const std::vector<double> reach =
+          distance_from_cells(triangulation, seeds, keep_distance);
+        for (const auto &cell :
+             system.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              reach[cell->active_cell_index()] <= keep_distance)
+            cell->clear_coarsen_flag();
+      }
+
+      double distance      = 0.;
+      double keep_distance = 0.;
     };
 
     DYNCONTACT_REGISTER_REFINEMENT_CRITERION(ContactZone,

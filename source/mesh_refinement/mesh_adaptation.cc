@@ -114,7 +114,8 @@ namespace dyncontact
       [&]() { mark_cells(problem.get_triangulation()); },
       memory_remedy(false),
       tau,
-      timer);
+      timer,
+      keep_motion);
     record.add(adaptation.energy_change, adaptation.penetration);
     record.add_motion(adaptation.momentum_change,
                       adaptation.displacement_change);

@@ -2,11 +2,9 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/grid/grid_refinement.h>
-#include <deal.II/grid/grid_tools.h>
-
-#include <boost/serialization/utility.hpp>
 
 #include <dyncontact/base/triangulation.h>
+#include <dyncontact/mesh_refinement/cell_distance.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/simulation_control.h>
@@ -116,6 +114,22 @@ namespace dyncontact
       "this or Coarsening tolerance) and coarsening_moved (m, the accepted "
       "shifts' sums over the bodies) when > 0.");
     prm.declare_entry(
+      "Keep body motion",
+      "false",
+      Patterns::Bool(),
+      "true: each transfer of the state to an adapted mesh adds to every "
+      "body the rigid translations of u and u_dot that bring its centre of "
+      "mass (the mass-weighted mean of u) and the mean of u_dot back to "
+      "their values before the transfer, component by component, where no "
+      "Dirichlet data hold the body's component: the transfer then changes "
+      "neither a free body's position nor its momentum (the momentum "
+      "exactly where the mass does not change: a curved boundary's "
+      "refinement changes it), which an interpolation to coarser cells "
+      "changes by what the removed waves carried; those kicks add up over "
+      "a long flight. The strains are unchanged; a displacement shifted "
+      "into the obstacle is projected back as after any transfer. false: "
+      "the interpolation alone.");
+    prm.declare_entry(
       "Error tolerance",
       "0",
       Patterns::Double(0., 1.),
@@ -186,6 +200,7 @@ namespace dyncontact
     coarsening_tolerance = prm.get_double("Coarsening tolerance");
     error_tolerance      = prm.get_double("Error tolerance");
     position_tolerance   = prm.get_double("Position tolerance");
+    keep_motion          = prm.get_bool("Keep body motion");
     split_by_volume      = prm.get("Error tolerance split") == "by volume";
     const auto selected  = Utilities::split_string_list(prm.get("Criteria"));
     prm.leave_subsection();
@@ -250,34 +265,15 @@ namespace dyncontact
 
   namespace
   {
-    /// Half the edge of @p cell (of a square or cube of its diameter).
-    template <typename Cell>
-    double
-    half_size(const Cell &cell)
-    {
-      return 0.5 * cell->diameter() /
-             std::sqrt(double(Cell::AccessorType::dimension));
-    }
-
-
-
     /**
      * Flags for refinement every active cell of level l that comes within
      * @p distance times max(1, @p max_level - l) of a cell flagged for
      * refinement, and clears the coarsen flags of those cells: a cell is
      * refined by one level per adaptation, so a cell k levels below the
-     * maximum must be refined k adaptations before a front arrives. A cell
-     * of centre x and half size r is within d of a flagged cell (x', r') if
-     * |x - x'| - r - r' <= d (the distance of the two cells' boxes along
-     * the line of their centres).
-     * The flags spread from face neighbour to face neighbour, each cell
-     * keeping the nearest flagged cell that reached it, until no cell is
-     * reached any more, first over each rank's own cells, then to the ghost
-     * cells of the other ranks, where they spread again, until no rank
-     * reaches a cell: the work is proportional to the cells of the widened
-     * zone, the exchanges to the times the zone crosses a rank's boundary.
-     * Returns the widening of the coarsest cells and the mesh's extent (the
-     * distance of its outermost cell centres).
+     * maximum must be refined k adaptations before a front arrives. The
+     * distances are MeshRefinement::distance_from_cells()'s, as far as the
+     * coarsest cell's limit. Returns the widening of the coarsest cells and
+     * the mesh's extent (the distance of its outermost cell centres).
      */
     template <int dim>
     std::pair<double, double>
@@ -285,19 +281,11 @@ namespace dyncontact
                      const double        distance,
                      const unsigned int  max_level)
     {
-      using Cell   = typename Triangulation<dim>::active_cell_iterator;
-      using Origin = std::pair<Point<dim>, double>; // centre, half size
-      const MPI_Comm      comm = triangulation.get_communicator();
-      const unsigned int  n    = triangulation.n_active_cells();
-      std::vector<Origin> origin(n);
-      std::vector<double> reach(n, std::numeric_limits<double>::max());
-      std::vector<char>   changed(n, 0);
-      std::vector<Cell>   front;
-      const auto          limit = [&](const int level) {
+      const MPI_Comm    comm = triangulation.get_communicator();
+      std::vector<bool> flagged(triangulation.n_active_cells(), false);
+      const auto        limit = [&](const int level) {
         return distance * std::max(1, int(max_level) - level);
       };
-      // the flagged cells start the spread, which goes as far as the
-      // coarsest cell's limit
       int coarsest = int(max_level);
       // the largest x_d and -x_d of the cell centres
       std::vector<double> bounds(2 * dim, -std::numeric_limits<double>::max());
@@ -310,84 +298,11 @@ namespace dyncontact
                 bounds[d]       = std::max(bounds[d], cell->center()[d]);
                 bounds[dim + d] = std::max(bounds[dim + d], -cell->center()[d]);
               }
-            if (cell->refine_flag_set())
-              {
-                const unsigned int i = cell->active_cell_index();
-                origin[i]            = {cell->center(), half_size(cell)};
-                reach[i]             = -std::numeric_limits<double>::max();
-                changed[i]           = 1;
-                front.push_back(cell);
-              }
+            flagged[cell->active_cell_index()] = cell->refine_flag_set();
           }
       const double spread = limit(Utilities::MPI::min(coarsest, comm));
-
-      // @p cell reached from @p from: true if it is within the spread and
-      // nearer than what reached it before
-      const auto reached = [&](const Cell &cell, const Origin &from) {
-        const unsigned int i = cell->active_cell_index();
-        const double       d =
-          cell->center().distance(from.first) - from.second - half_size(cell);
-        if (d > spread || d >= reach[i])
-          return false;
-        origin[i]  = from;
-        reach[i]   = d;
-        changed[i] = 1;
-        return true;
-      };
-
-      const auto visit =
-        [&](const Cell &neighbor, const Cell &cell, std::vector<Cell> &next) {
-          if (neighbor->is_locally_owned() &&
-              reached(neighbor, origin[cell->active_cell_index()]))
-            next.push_back(neighbor);
-        };
-      const bool parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
-      while (true)
-        {
-          // over this rank's cells, round by round, as far as it goes
-          while (!front.empty())
-            {
-              std::vector<Cell> next;
-              for (const Cell &cell : front)
-                for (const unsigned int f : cell->face_indices())
-                  if (!cell->at_boundary(f))
-                    {
-                      const auto neighbor = cell->neighbor(f);
-                      if (neighbor->has_children())
-                        for (unsigned int s = 0;
-                             s < cell->face(f)->n_children();
-                             ++s)
-                          visit(cell->neighbor_child_on_subface(f, s),
-                                cell,
-                                next);
-                      else
-                        visit(neighbor, cell, next);
-                    }
-              front.swap(next);
-            }
-          if (!parallel)
-            break;
-          // what changed on this rank's cells since the last exchange, to
-          // the ranks that see them as ghosts: the ghosts it reaches start
-          // the next spread there (one exchange per crossing of a rank's
-          // boundary, not one per cell of the spread)
-          GridTools::exchange_cell_data_to_ghosts<Origin>(
-            triangulation,
-            [&](const Cell &cell) {
-              return changed[cell->active_cell_index()] ?
-                       std_cxx17::optional<Origin>(
-                         origin[cell->active_cell_index()]) :
-                       std_cxx17::optional<Origin>();
-            },
-            [&](const Cell &cell, const Origin &from) {
-              if (reached(cell, from))
-                front.push_back(cell);
-            });
-          std::fill(changed.begin(), changed.end(), 0);
-          if (Utilities::MPI::max(front.size(), comm) == 0)
-            break;
-        }
-
+      const std::vector<double> reach =
+        MeshRefinement::distance_from_cells(triangulation, flagged, spread);
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned() &&
             reach[cell->active_cell_index()] <= limit(cell->level()))

@@ -450,7 +450,8 @@ namespace dyncontact
                                    const std::function<void()> &mark_cells,
                                    const std::string           &remedy,
                                    const double                 tau,
-                                   TimerOutput                 &timer)
+                                   TimerOutput                 &timer,
+                                   const bool                   keep_motion)
   {
     {
       TimerOutput::Scope t(timer, "adaptation: indicators and flags");
@@ -482,20 +483,24 @@ namespace dyncontact
     // costs no energy evaluation; the energy before reads A u from the
     // last step's cache, the one after computes A u on the new mesh, which
     // the next step then finds in the cache); with each body's momentum and
-    // mean displacement
+    // mean displacement, and before the transfer its mean velocity where
+    // the transfer keeps it
     struct Measures
     {
       double              energy;
-      std::vector<double> momenta, means;
+      std::vector<double> momenta, means, velocities;
     };
-    const auto measure = [&]() {
+    const auto measure = [&](const bool with_velocities) {
       TimerOutput::Scope t(timer, "adaptation: energy transfer");
       const unsigned int n_bodies = scene.n_bodies();
       return Measures{system->total_energy(u, udot),
                       body_sums(*system, udot, n_bodies, comm),
-                      body_mean_displacements(*system, u, n_bodies, comm)};
+                      body_mean_displacements(*system, u, n_bodies, comm),
+                      with_velocities ?
+                        body_mean_displacements(*system, udot, n_bodies, comm) :
+                        std::vector<double>()};
     };
-    const Measures before = measure();
+    const Measures before = measure(keep_motion);
     {
       TimerOutput::Scope t(timer, "adaptation: refinement and transfer");
       // transfer u and udot to the new mesh (p4est also repartitions it)
@@ -511,6 +516,14 @@ namespace dyncontact
                                    1e-3 * tau,
                                    u,
                                    &udot);
+      // (the rigid translation that undoes the transfer's shift of each
+      // free body's centre of mass and of its velocity)
+      if (keep_motion)
+        {
+          shift_body_means(*system, u, before.means, scene.n_bodies(), comm);
+          shift_body_means(
+            *system, udot, before.velocities, scene.n_bodies(), comm);
+        }
     }
     make_integrator(tau, timer, true);
 
@@ -522,7 +535,7 @@ namespace dyncontact
       adaptation.penetration =
         integrator->restore_constraints(u, contact->get_row_operator());
     }
-    const Measures after     = measure();
+    const Measures after     = measure(false);
     adaptation.energy_change = after.energy - before.energy;
     adaptation.momentum_change =
       largest_body_change(before.momenta, after.momenta);

@@ -37,6 +37,23 @@ namespace dyncontact
                           const unsigned int             n_bodies,
                           const MPI_Comm                 communicator);
 
+  /**
+   * Adds to @p x on each body's DoFs of each component a constant that
+   * brings its mass-weighted mean (as body_mean_displacements() computes
+   * it) to @p means (entry 3 b + d), where no DoF of that body and
+   * component is held by a Dirichlet constraint (a constant keeps the
+   * hanging nodes' constraints, not Dirichlet data): a rigid translation,
+   * which changes neither strain nor contact forces of the body's own
+   * motion. @p x is locally owned; its ghosts are not updated.
+   */
+  template <int dim>
+  void
+  shift_body_means(const SemiDiscreteSystem<dim> &system,
+                   VectorType                    &x,
+                   const std::vector<double>     &means,
+                   const unsigned int             n_bodies,
+                   const MPI_Comm                 communicator);
+
   /// The largest Euclidean distance between the 3-vectors of a body in
   /// @p a and in @p b (of body_sums() or body_mean_displacements()).
   double

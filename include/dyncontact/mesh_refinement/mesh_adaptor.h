@@ -250,6 +250,7 @@ namespace dyncontact
     double       coarsening_tolerance = 0.;
     double       error_tolerance      = 0.;
     double       position_tolerance   = 0.;
+    bool         keep_motion          = false;
     /// "Error tolerance split" = by volume (else global)
     bool split_by_volume = false;
     /// limit_coarsening()'s result of the last marking

@@ -188,13 +188,16 @@ namespace dyncontact
     /// back onto the new K_h. If no cell is marked (on any rank), nothing
     /// changes. A refinement whose growth would not fit into the memory
     /// available is refused with a message naming @p remedy (the
-    /// parameters to reduce) before the mesh changes.
+    /// parameters to reduce) before the mesh changes. With @p keep_motion
+    /// the transfer keeps each body's centre of mass and its velocity where
+    /// no Dirichlet data hold the body's component (shift_body_means()).
     Adaptation
     adapt_mesh(const Scene<dim>            &scene,
                const std::function<void()> &mark_cells,
                const std::string           &remedy,
                const double                 tau,
-               TimerOutput                 &timer);
+               TimerOutput                 &timer,
+               const bool                   keep_motion = false);
 
     /// Stops with a message naming @p what (the mesh) and @p remedy if the
     /// cells flagged now
