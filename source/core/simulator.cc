@@ -162,9 +162,13 @@ namespace dyncontact
     mesh_adaptor->load(state);
     if (state.count("refinement_pending") &&
         state.at("refinement_pending") == "1")
-      // the run ended on a step after which the mesh adapts: adapt now, as
-      // the uninterrupted run did (the active sets refer to the old mesh)
-      refine_mesh();
+      {
+        // the run ended on a step after which the mesh adapts: adapt now, as
+        // the uninterrupted run did (the active sets refer to the old mesh),
+        // with the last step's active sets (Contact zone/Keep distance)
+        p.restore_reported_active_sets(flags);
+        refine_mesh();
+      }
     // (unless the adaptation changed the mesh)
     p.resume_integrator(control.get_timestep(), flags, *timer);
     if (control.is_adaptive() && state.count("step_matrices_built"))

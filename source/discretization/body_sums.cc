@@ -72,7 +72,10 @@ namespace dyncontact
   {
     const std::vector<double> now =
       body_mean_displacements(system, x, n_bodies, communicator);
-    // the slots with a Dirichlet DoF (a constrained DoF without entries)
+    // the slots with a Dirichlet DoF (a constrained DoF without entries;
+    // the program's Dirichlet data hold components along the axes, so that
+    // a translation along a free axis keeps them: a slanted constraint
+    // u . n = 0 has entries and would need the shift along its tangent)
     std::vector<double>               held(3 * n_bodies, 0.);
     const std::vector<unsigned char> &slots = system.get_owned_dof_slots();
     const IndexSet                   &owned = system.locally_owned_dofs();

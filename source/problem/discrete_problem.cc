@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace dyncontact
 {
@@ -308,6 +309,16 @@ namespace dyncontact
     for (VectorType &v : more)
       vectors.push_back(&v);
     system->load_vectors(mesh_file, vectors);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteProblem<dim>::restore_reported_active_sets(const VectorType &flags)
+  {
+    std::tie(report.active, report.projection_active) =
+      TimeIntegrator::decode_active_sets(contact->get_rows(), flags);
   }
 
 

@@ -407,11 +407,11 @@ namespace dyncontact
 
 
 
-  void
-  TimeIntegrator::load_active_sets(const VectorType &flags)
+  std::pair<std::vector<char>, std::vector<char>>
+  TimeIntegrator::decode_active_sets(const ContactRows &rows,
+                                     const VectorType  &flags)
   {
-    const ContactRows &rows = operators.contact_rows();
-    std::vector<char>  active(rows.size()), projection(rows.size());
+    std::vector<char> active(rows.size()), projection(rows.size());
     for (unsigned int p = 0; p < rows.size(); ++p)
       {
         const int flag =
@@ -419,6 +419,16 @@ namespace dyncontact
         active[p]     = (flag & 1) ? 1 : 0;
         projection[p] = (flag & 2) ? 1 : 0;
       }
+    return {active, projection};
+  }
+
+
+
+  void
+  TimeIntegrator::load_active_sets(const VectorType &flags)
+  {
+    const auto [active, projection] =
+      decode_active_sets(operators.contact_rows(), flags);
     warm_start(active, projection);
   }
 

@@ -140,6 +140,12 @@ namespace dyncontact
          VectorType              &flags,
          std::vector<VectorType> &more);
 
+    /// The last step's active sets in the report (get_report(): what a
+    /// mesh adaptation reads of the last step) from the @p flags of a
+    /// checkpoint, for the adaptation that a resume runs before any step.
+    void
+    restore_reported_active_sets(const VectorType &flags);
+
     /// The integrator for @p tau with the active sets of @p flags, unless
     /// one was made since (by a mesh adaptation after loading).
     /// After a resume at time @p t: the loads at @p t.

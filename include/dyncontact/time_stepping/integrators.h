@@ -109,6 +109,11 @@ namespace dyncontact
     void
     load_active_sets(const VectorType &flags);
 
+    /// The active sets (displacement step, projection) that @p flags of
+    /// save_active_sets() hold on @p rows.
+    static std::pair<std::vector<char>, std::vector<char>>
+    decode_active_sets(const ContactRows &rows, const VectorType &flags);
+
     const Scheme &
     get_scheme() const
     {
