@@ -13,6 +13,7 @@
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/time_stepping/step_operators.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dyncontact
@@ -114,6 +115,26 @@ namespace dyncontact
           }
 
         const unsigned int max_level = this->get_mesh_adaptor().get_max_level();
+        const std::vector<bool> in_zone = cells_at(zone);
+        for (const auto &cell :
+             system.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned() && in_zone[cell->active_cell_index()])
+            {
+              cell->clear_coarsen_flag();
+              if (cell->level() < int(max_level))
+                cell->set_refine_flag();
+            }
+      }
+
+    private:
+      /// Whether each locally owned active cell (by its index) has a node
+      /// where the ghosted nodal vector @p marks is > 0.
+      std::vector<bool>
+      cells_at(const VectorType &marks) const
+      {
+        const SemiDiscreteSystem<dim> &system = this->get_system();
+        std::vector<bool>              at(
+          system.get_dof_handler().get_triangulation().n_active_cells(), false);
         std::vector<types::global_dof_index> dofs(
           system.get_fe().n_dofs_per_cell());
         for (const auto &cell :
@@ -122,17 +143,15 @@ namespace dyncontact
             {
               cell->get_dof_indices(dofs);
               for (const auto &node : system.get_node_system_indices())
-                if (zone(dofs[node[0]]) > 0.)
+                if (marks(dofs[node[0]]) > 0.)
                   {
-                    cell->clear_coarsen_flag();
-                    if (cell->level() < int(max_level))
-                      cell->set_refine_flag();
+                    at[cell->active_cell_index()] = true;
                     break;
                   }
             }
+        return at;
       }
 
-    private:
       /// Clears the coarsen flags of the cells within the keep distance of
       /// a cell with a node of @p in_contact (> 0).
       void
@@ -141,24 +160,10 @@ namespace dyncontact
         const SemiDiscreteSystem<dim> &system = this->get_system();
         const auto                    &triangulation =
           system.get_dof_handler().get_triangulation();
-        std::vector<bool> seeds(triangulation.n_active_cells(), false);
-        std::vector<types::global_dof_index> dofs(
-          system.get_fe().n_dofs_per_cell());
-        unsigned int n_seeds = 0;
-        for (const auto &cell :
-             system.get_dof_handler().active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(dofs);
-              for (const auto &node : system.get_node_system_indices())
-                if (in_contact(dofs[node[0]]) > 0.)
-                  {
-                    seeds[cell->active_cell_index()] = true;
-                    ++n_seeds;
-                    break;
-                  }
-            }
-        if (Utilities::MPI::max(n_seeds, this->get_mpi_communicator()) == 0)
+        const std::vector<bool> seeds = cells_at(in_contact);
+        const bool              any =
+          std::find(seeds.begin(), seeds.end(), true) != seeds.end();
+        if (!Utilities::MPI::logical_or(any, this->get_mpi_communicator()))
           return;
         const std::vector<double> reach =
           distance_from_cells(triangulation, seeds, keep_distance);
