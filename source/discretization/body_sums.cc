@@ -31,47 +31,66 @@ namespace dyncontact
 
 
   template <int dim>
-  std::vector<double>
-  body_mean_displacements(const SemiDiscreteSystem<dim> &system,
-                          const VectorType              &u,
-                          const unsigned int             n_bodies,
-                          const MPI_Comm                 communicator)
+  std::vector<std::vector<double>>
+  body_means(const SemiDiscreteSystem<dim>         &system,
+             const std::vector<const VectorType *> &xs,
+             const unsigned int                     n_bodies,
+             const MPI_Comm                         communicator)
   {
     // M is symmetric and couples neither components nor bodies: the sum of
-    // M u over a body's component is that of m_i u_i with the row sums
-    // m = M 1, and its mass that of m_i (one product)
-    VectorType ones(u), m;
+    // M x over a body's component is that of m_i x_i with the row sums
+    // m = M 1, and its mass that of m_i (one product for all of @p xs)
+    VectorType ones(*xs[0]), m;
     ones = 1.;
     system.matrices().mass_vmult(m, ones);
-    std::vector<double> sums(6 * n_bodies, 0.); // M u, then the masses
-    const std::vector<unsigned char> &slots = system.get_owned_dof_slots();
-    const double *m_values = m.begin(), *u_values = u.begin();
+    const unsigned int n = 3 * n_bodies;
+    // the sums of M x for each x, then the masses
+    std::vector<double>               sums((xs.size() + 1) * n, 0.);
+    const std::vector<unsigned char> &slots    = system.get_owned_dof_slots();
+    const double                     *m_values = m.begin();
     for (std::size_t k = 0; k < slots.size(); ++k)
       {
         const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
-        sums[slot] += m_values[k] * u_values[k];
-        sums[3 * n_bodies + slot] += m_values[k];
+        for (std::size_t v = 0; v < xs.size(); ++v)
+          sums[v * n + slot] += m_values[k] * xs[v]->begin()[k];
+        sums[xs.size() * n + slot] += m_values[k];
       }
     Utilities::MPI::sum(sums, communicator, sums);
-    std::vector<double> means(3 * n_bodies, 0.);
-    for (unsigned int k = 0; k < 3 * n_bodies; ++k)
-      means[k] =
-        sums[3 * n_bodies + k] > 0. ? sums[k] / sums[3 * n_bodies + k] : 0.;
+    std::vector<std::vector<double>> means(xs.size(),
+                                           std::vector<double>(n, 0.));
+    for (std::size_t v = 0; v < xs.size(); ++v)
+      for (unsigned int k = 0; k < n; ++k)
+        means[v][k] = sums[xs.size() * n + k] > 0. ?
+                        sums[v * n + k] / sums[xs.size() * n + k] :
+                        0.;
     return means;
   }
 
 
 
   template <int dim>
-  void
-  shift_body_means(const SemiDiscreteSystem<dim> &system,
-                   VectorType                    &x,
-                   const std::vector<double>     &means,
-                   const unsigned int             n_bodies,
-                   const MPI_Comm                 communicator)
+  std::vector<double>
+  body_mean_displacements(const SemiDiscreteSystem<dim> &system,
+                          const VectorType              &u,
+                          const unsigned int             n_bodies,
+                          const MPI_Comm                 communicator)
   {
-    const std::vector<double> now =
-      body_mean_displacements(system, x, n_bodies, communicator);
+    return body_means(system, {&u}, n_bodies, communicator)[0];
+  }
+
+
+
+  template <int dim>
+  void
+  shift_body_means(const SemiDiscreteSystem<dim>          &system,
+                   const std::vector<VectorType *>        &xs,
+                   const std::vector<std::vector<double>> &means,
+                   const unsigned int                      n_bodies,
+                   const MPI_Comm                          communicator)
+  {
+    const std::vector<const VectorType *>  read(xs.begin(), xs.end());
+    const std::vector<std::vector<double>> now =
+      body_means(system, read, n_bodies, communicator);
     // the slots with a Dirichlet DoF (a constrained DoF without entries;
     // the program's Dirichlet data hold components along the axes, so that
     // a translation along a free axis keeps them: a slanted constraint
@@ -88,12 +107,15 @@ namespace dyncontact
           held[3 * (slots[k] / dim) + slots[k] % dim] = 1.;
       }
     Utilities::MPI::max(held, communicator, held);
-    double *values = x.begin();
-    for (std::size_t k = 0; k < slots.size(); ++k)
+    for (std::size_t v = 0; v < xs.size(); ++v)
       {
-        const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
-        if (held[slot] == 0.)
-          values[k] += means[slot] - now[slot];
+        double *values = xs[v]->begin();
+        for (std::size_t k = 0; k < slots.size(); ++k)
+          {
+            const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
+            if (held[slot] == 0.)
+              values[k] += means[v][slot] - now[v][slot];
+          }
       }
   }
 
@@ -114,20 +136,25 @@ namespace dyncontact
 
 
 
-#define DYNCONTACT_INSTANTIATE(dim)                                       \
-  template std::vector<double> body_sums(const SemiDiscreteSystem<dim> &, \
-                                         const VectorType &,              \
-                                         const unsigned int,              \
-                                         const MPI_Comm);                 \
-  template std::vector<double> body_mean_displacements(                   \
-    const SemiDiscreteSystem<dim> &,                                      \
-    const VectorType &,                                                   \
-    const unsigned int,                                                   \
-    const MPI_Comm);                                                      \
-  template void shift_body_means(const SemiDiscreteSystem<dim> &,         \
-                                 VectorType &,                            \
-                                 const std::vector<double> &,             \
-                                 const unsigned int,                      \
+#define DYNCONTACT_INSTANTIATE(dim)                                        \
+  template std::vector<double> body_sums(const SemiDiscreteSystem<dim> &,  \
+                                         const VectorType &,               \
+                                         const unsigned int,               \
+                                         const MPI_Comm);                  \
+  template std::vector<double> body_mean_displacements(                    \
+    const SemiDiscreteSystem<dim> &,                                       \
+    const VectorType &,                                                    \
+    const unsigned int,                                                    \
+    const MPI_Comm);                                                       \
+  template std::vector<std::vector<double>> body_means(                    \
+    const SemiDiscreteSystem<dim> &,                                       \
+    const std::vector<const VectorType *> &,                               \
+    const unsigned int,                                                    \
+    const MPI_Comm);                                                       \
+  template void shift_body_means(const SemiDiscreteSystem<dim> &,          \
+                                 const std::vector<VectorType *> &,        \
+                                 const std::vector<std::vector<double>> &, \
+                                 const unsigned int,                       \
                                  const MPI_Comm);
   DYNCONTACT_INSTANTIATE(2)
   DYNCONTACT_INSTANTIATE(3)

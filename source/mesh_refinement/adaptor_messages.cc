@@ -22,17 +22,16 @@ namespace dyncontact
     std::vector<std::pair<std::string, std::string>> unread;
     if (adapts)
       {
-        if (initial_refinements == 0 &&
-            std::find(criterion_names.begin(),
-                      criterion_names.end(),
-                      "contact zone") == criterion_names.end())
+        const bool zone_criterion =
+          std::find(criterion_names.begin(),
+                    criterion_names.end(),
+                    "contact zone") != criterion_names.end();
+        if (initial_refinements == 0 && !zone_criterion)
           unread.emplace_back("Mesh refinement/Contact zone",
                               "no criterion of Mesh refinement/Criteria is "
                               "the contact zone, and Initial contact "
                               "refinements = 0");
-        else if (std::find(criterion_names.begin(),
-                           criterion_names.end(),
-                           "contact zone") == criterion_names.end())
+        else if (!zone_criterion)
           unread.emplace_back("Mesh refinement/Contact zone/Keep distance",
                               "it acts at the adaptations during the run, "
                               "and no criterion of Mesh refinement/Criteria "

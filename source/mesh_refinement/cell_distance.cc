@@ -12,12 +12,16 @@ namespace dyncontact
 {
   namespace MeshRefinement
   {
-    template <int dim>
-    double
-    half_size(const typename Triangulation<dim>::active_cell_iterator &cell)
+    namespace
     {
-      return 0.5 * cell->diameter() / std::sqrt(double(dim));
-    }
+      /// Half the edge of @p cell (of a square or cube of its diameter).
+      template <int dim>
+      double
+      half_size(const typename Triangulation<dim>::active_cell_iterator &cell)
+      {
+        return 0.5 * cell->diameter() / std::sqrt(double(dim));
+      }
+    } // namespace
 
 
 
@@ -124,9 +128,5 @@ namespace dyncontact
     distance_from_cells(const Triangulation<3> &,
                         const std::vector<bool> &,
                         const double);
-    template double
-    half_size<2>(const Triangulation<2>::active_cell_iterator &);
-    template double
-    half_size<3>(const Triangulation<3>::active_cell_iterator &);
   } // namespace MeshRefinement
 } // namespace dyncontact

@@ -499,17 +499,19 @@ namespace dyncontact
     struct Measures
     {
       double              energy;
-      std::vector<double> momenta, means, velocities;
+      std::vector<double> momenta;
+      /// the mean displacements, and the mean velocities if asked for
+      std::vector<std::vector<double>> means;
     };
     const auto measure = [&](const bool with_velocities) {
-      TimerOutput::Scope t(timer, "adaptation: energy transfer");
-      const unsigned int n_bodies = scene.n_bodies();
+      TimerOutput::Scope              t(timer, "adaptation: energy transfer");
+      const unsigned int              n_bodies = scene.n_bodies();
+      std::vector<const VectorType *> xs       = {&u};
+      if (with_velocities)
+        xs.push_back(&udot);
       return Measures{system->total_energy(u, udot),
                       body_sums(*system, udot, n_bodies, comm),
-                      body_mean_displacements(*system, u, n_bodies, comm),
-                      with_velocities ?
-                        body_mean_displacements(*system, udot, n_bodies, comm) :
-                        std::vector<double>()};
+                      body_means(*system, xs, n_bodies, comm)};
     };
     const Measures before = measure(keep_motion);
     {
@@ -530,11 +532,8 @@ namespace dyncontact
       // (the rigid translation that undoes the transfer's shift of each
       // free body's centre of mass and of its velocity)
       if (keep_motion)
-        {
-          shift_body_means(*system, u, before.means, scene.n_bodies(), comm);
-          shift_body_means(
-            *system, udot, before.velocities, scene.n_bodies(), comm);
-        }
+        shift_body_means(
+          *system, {&u, &udot}, before.means, scene.n_bodies(), comm);
     }
     make_integrator(tau, timer, true);
 
@@ -551,7 +550,7 @@ namespace dyncontact
     adaptation.momentum_change =
       largest_body_change(before.momenta, after.momenta);
     adaptation.displacement_change =
-      largest_body_change(before.means, after.means);
+      largest_body_change(before.means[0], after.means[0]);
     return adaptation;
   }
 

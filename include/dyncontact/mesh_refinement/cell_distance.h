@@ -31,11 +31,6 @@ namespace dyncontact
     distance_from_cells(const Triangulation<dim> &triangulation,
                         const std::vector<bool>  &seeds,
                         const double              spread);
-
-    /// Half the edge of @p cell (of a square or cube of its diameter).
-    template <int dim>
-    double
-    half_size(const typename Triangulation<dim>::active_cell_iterator &cell);
   } // namespace MeshRefinement
 } // namespace dyncontact
 
