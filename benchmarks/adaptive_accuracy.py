@@ -17,7 +17,8 @@ with delta 0.4), by velocity jump with curved boundary and the contact
 zone (Front widening 1; and Front widening 2 with Position tolerance
 1e-4 m, every 2 and every 8 steps), the same with Front widening 1 and
 Contact zone/Keep distance 0.3 m (alone, with Keep body motion, and with
-both every 4 steps), and, marked by a tolerance instead of the
+both every 4 steps, and with both adapting every 32 steps while no
+contact is near: Refinement interval without contact), and, marked by a tolerance instead of the
 fractions, with each Mesh refinement/Error tolerance of --error-tolerances
 (the middle one also adapting every 4 steps instead of 2) and of
 --volume-tolerances with Error tolerance split = by volume, all compared with the uniform level-5 run. For each
@@ -125,6 +126,10 @@ command += ["--adaptive-variant",
 command += ["--adaptive-variant",
             "the same every 4:" + keep + ";Mesh refinement/Keep body "
             "motion=true;Mesh refinement/Refinement interval=4"]
+command += ["--adaptive-variant",
+            "the same, without contact every 32:" + keep +
+            ";Mesh refinement/Keep body motion=true;Mesh refinement/"
+            "Refinement interval without contact=32"]
 for t in position_tolerances:
     command += ["--adaptive-variant",
                 "position %s:Mesh refinement/Position tolerance=%s" % (t, t)]

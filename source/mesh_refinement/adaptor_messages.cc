@@ -67,6 +67,7 @@ namespace dyncontact
     // refinements)
     const bool curved = curved_boundary() != nullptr;
     for (const std::string entry : {"Refinement interval",
+                                    "Refinement interval without contact",
                                     "Refine fraction",
                                     "Coarsen fraction",
                                     "Coarsening tolerance",

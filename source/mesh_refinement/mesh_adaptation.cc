@@ -2,11 +2,14 @@
 // initial contact zone and curved boundary, the adaptation after a step and
 // its record, kept in checkpoints (the marking is in mesh_adaptor.cc).
 
+#include <dyncontact/contact/contact_setup.h>
 #include <dyncontact/mesh_refinement/mesh_adaptor.h>
 #include <dyncontact/problem/discrete_problem.h>
 #include <dyncontact/scenes/interface.h>
 #include <dyncontact/time_stepping/simulation_control.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -109,6 +112,15 @@ namespace dyncontact
                           const double          tau,
                           TimerOutput          &timer)
   {
+    // (in a free flight, only every "Refinement interval without contact"
+    // steps)
+    if (interval_without_contact > interval &&
+        this->get_control().get_step() % interval_without_contact != 0)
+      {
+        TimerOutput::Scope t(timer, "adaptation: indicators and flags");
+        if (!contact_near(problem, tau))
+          return false;
+      }
     const auto adaptation = problem.adapt_mesh(
       this->get_scene(),
       [&]() { mark_cells(problem.get_triangulation()); },
@@ -129,6 +141,46 @@ namespace dyncontact
 
 
 
+  template <int dim>
+  bool
+  MeshAdaptor<dim>::contact_near(const DiscreteProblem<dim> &problem,
+                                 const double                tau) const
+  {
+    const ContactRows &rows   = problem.get_contact().get_rows();
+    const auto        &report = problem.get_report();
+    bool               near   = false;
+    // (the report is the last step's, on these rows; none before the
+    // first step)
+    for (const std::vector<char> *active :
+         {&report.active, &report.projection_active})
+      if (active->size() == rows.size())
+        near = near || std::any_of(active->begin(),
+                                   active->end(),
+                                   [](const char a) { return a != 0; });
+    // (the rows are this rank's; reading their entries is collective)
+    if (!Utilities::MPI::logical_or(near, this->get_mpi_communicator()))
+      {
+        const auto &row_operator = problem.get_contact().get_row_operator();
+        const std::vector<double> violation =
+          row_operator.constraint_values(problem.get_solution());
+        const std::vector<double> closing =
+          row_operator.apply(problem.get_velocity());
+        // (until the next step due by Refinement interval, which asks again)
+        const double flight = interval * tau;
+        for (unsigned int p = 0; p < rows.size() && !near; ++p)
+          {
+            const double size = std::pow(rows.rows[p].weight, 1. / (dim - 1));
+            // (the contact zone's test, as in its criterion)
+            const double gap =
+              -violation[p] - flight * std::max(closing[p], 0.);
+            near = gap <= (1. + 1e-10) * zone_distance || gap < 2. * size;
+          }
+      }
+    return Utilities::MPI::logical_or(near, this->get_mpi_communicator());
+  }
+
+
+
   // (the class is instantiated in mesh_adaptor.cc)
   template void
   MeshAdaptor<2>::refine_initial_contact_zone(DiscreteProblem<2> &,
@@ -138,6 +190,10 @@ namespace dyncontact
                                               TimerOutput &);
   template bool
   MeshAdaptor<2>::adapt(DiscreteProblem<2> &, const double, TimerOutput &);
+  template bool
+  MeshAdaptor<2>::contact_near(const DiscreteProblem<2> &, const double) const;
+  template bool
+  MeshAdaptor<3>::contact_near(const DiscreteProblem<3> &, const double) const;
   template bool
   MeshAdaptor<3>::adapt(DiscreteProblem<3> &, const double, TimerOutput &);
   template void

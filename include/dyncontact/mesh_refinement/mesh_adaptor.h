@@ -203,6 +203,15 @@ namespace dyncontact
     widening_distance() const;
 
   private:
+    /// Whether a contact is near, over all ranks: a slave node of the last
+    /// step's active sets (the displacement's or the L2 projection's), or
+    /// one whose gap, less the distance its normal velocity closes in
+    /// "Refinement interval" steps of @p tau (until the next step that
+    /// asks again), is in the contact zone (at most its Distance, or below
+    /// two cell sizes at the node).
+    bool
+    contact_near(const DiscreteProblem<dim> &problem, const double tau) const;
+
     /// The kinetic and elastic energy of the state (J) and the bodies'
     /// volume, over all ranks.
     std::pair<double, double>
@@ -240,7 +249,11 @@ namespace dyncontact
     mark_by_tolerance(Triangulation<dim>              &triangulation,
                       const std::pair<double, double> &energy) const;
 
-    unsigned int interval             = 0;
+    unsigned int interval = 0;
+    /// "Refinement interval without contact" (0: interval always)
+    unsigned int interval_without_contact = 0;
+    /// Contact zone/Distance (m), for contact_near()
+    double       zone_distance        = 0.;
     unsigned int min_level            = 0;
     unsigned int max_level            = 10;
     double       refine_fraction      = 0.2;

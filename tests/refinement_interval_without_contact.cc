@@ -1,0 +1,143 @@
+// Mesh refinement/Refinement interval without contact: while no contact is
+// near, the mesh adapts only after every 16th step instead of every 2nd. The
+// bar against the wall (H = 0.25 m, 0.5 m long, 16 cells along, 0.1 m from
+// the wall at 1 m/s), levels 0 to 2 by the velocity jump and the contact
+// zone, Keep body motion, tau = h_min / 2c, N-CS++, run to 0.5 s after the
+// release at 1.1 s. Against the same run adapted every 2 steps throughout:
+// - in the flight after the release (from 0.05 s after it on) the mesh
+//   changes only after multiples of 16 steps, where the other run changes it
+//   after other steps too;
+// - during the contact it adapts every 2 steps (mesh changes after steps
+//   that are not multiples of 16);
+// - the approach counts as near (the gap, less the distance the bar closes
+//   in 16 steps, is below two cell sizes at the node): the mesh
+//   changes after steps that are not multiples of 16 before the impact, and
+//   the contact's start and end, the peak force and the momentum after the
+//   release are the other run's (measured on 2026-11-30: the same steps
+//   and peak force, the momentum 4e-9 of it apart);
+// - its mesh changes 94 times against 135;
+// - resumed from a checkpoint at a step in the flight that the option
+//   skips, the run goes on as the uninterrupted one.
+// With the active sets alone as the test of a near contact (tried), the
+// approach adapted only at step 16, the contact zone was not refined ahead
+// of the impact, and the contact's start, the peak force and the momentum
+// differed. On 1 and 2 ranks.
+
+#include "tests.h"
+
+namespace
+{
+  using namespace testing;
+
+  struct Run
+  {
+    std::pair<double, double> contact;
+    double                    peak_force = 0.;
+    double                    momentum   = 0.; // after the release
+    // mesh changes after steps that are not multiples of 16
+    unsigned int approach_changes = 0, contact_changes = 0, flight_changes = 0;
+    unsigned int changes = 0; // in all
+    std::vector<double> dofs;
+  };
+
+  const double tau = 1. / 256.;
+
+  std::string
+  entries(const unsigned int without_contact)
+  {
+    return scene_entries("Bar impact",
+                         "    set Height = 0.25\n"
+                         "    set Length = 0.5\n"
+                         "    set Cells along length = 16\n") +
+           "subsection Mesh refinement\n"
+           "  set Refinement interval = 2\n"
+           "  set Refinement interval without contact = " +
+           std::to_string(without_contact) +
+           "\n"
+           "  set Maximum level = 2\n"
+           "  set Criteria = velocity jump, contact zone\n"
+           "  set Keep body motion = true\n"
+           "end\n";
+  }
+
+  Run
+  simulate(const unsigned int without_contact)
+  {
+    const Statistics s =
+      run(bar_prm(2, "N-CS++", 32, tau, 1.6, entries(without_contact)));
+    const auto t     = s.column("time");
+    const auto step  = s.column("step");
+    const auto cells = s.column("cells");
+    const auto force = s.column("contact_force");
+    const auto p     = s.column("momentum_x");
+    Run        r;
+    r.contact    = contact_interval(s);
+    r.peak_force = max_of(force);
+    r.momentum   = p.back();
+    r.dofs       = s.column("dofs");
+    for (unsigned int i = 1; i < t.size(); ++i)
+      if (cells[i] != cells[i - 1])
+        {
+          ++r.changes;
+          // (the change is made after the row's step, seen in the next row)
+          if (static_cast<unsigned int>(step[i - 1]) % 16 == 0)
+            continue;
+          if (t[i] < r.contact.first)
+            ++r.approach_changes;
+          else if (t[i] <= r.contact.second)
+            ++r.contact_changes;
+          else if (t[i] > r.contact.second + 0.05)
+            ++r.flight_changes;
+        }
+    return r;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dyncontact::MPIInitFinalize mpi(argc, argv);
+  using namespace testing;
+
+  const Run    every = simulate(0), sparse = simulate(16);
+  const double tau = 1. / 256.;
+  log() << "every 2 steps: the mesh changes after other steps than "
+        << "multiples of 16 in the flight (more than 5 times): "
+        << check(every.flight_changes > 5) << "\n";
+  log() << "without contact every 16: never in the flight: "
+        << check(sparse.flight_changes == 0) << "\n";
+  log() << "  in the contact more than 10 times: "
+        << check(sparse.contact_changes > 10) << "\n";
+  log() << "  in the approach (the contact zone ahead of the impact): "
+        << check(sparse.approach_changes >= 1) << "\n";
+  log() << "  contact start and end at the same steps: "
+        << check(
+             std::abs(sparse.contact.first - every.contact.first) < 0.5 * tau &&
+             std::abs(sparse.contact.second - every.contact.second) < 0.5 * tau)
+        << "\n";
+  log() << "  peak force and momentum after the release within 1e-6 of the "
+        << "other run's: "
+        << check(std::abs(sparse.peak_force - every.peak_force) <
+                   1e-6 * every.peak_force &&
+                 std::abs(sparse.momentum - every.momentum) <
+                   1e-6 * std::abs(every.momentum))
+        << "\n";
+  log() << "  fewer mesh changes in all: "
+        << check(sparse.changes < every.changes) << "\n";
+  // a run that ends at step 330 (t = 1.289 s, in the flight), due to adapt
+  // by Refinement interval but not by 16, resumed from its checkpoint
+  // there: the resume skips the adaptation, as the uninterrupted run did
+  const auto prm = [&](const double end, const bool resume) {
+    return bar_prm(2, "N-CS++", 32, tau, end, entries(16)) +
+           "set Output directory = resumed\n" + checkpointing(110, resume);
+  };
+  run(prm(330. * tau, false));
+  const Statistics resumed = run(prm(1.6, true));
+  const auto       p       = resumed.column("momentum_x");
+  log() << "resumed at step 330: the DoFs and the momentum of the "
+        << "uninterrupted run: "
+        << check(resumed.column("dofs") == sparse.dofs &&
+                 std::abs(p.back() - sparse.momentum) <=
+                   1e-8 * std::abs(sparse.momentum))
+        << "\n";
+}
