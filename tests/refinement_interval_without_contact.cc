@@ -10,7 +10,7 @@
 // - during the contact it adapts every 2 steps (mesh changes after steps
 //   that are not multiples of 16);
 // - the approach counts as near (the gap, less the distance the bar closes
-//   in 16 steps, is below two cell sizes at the node): the mesh
+//   in 2 steps, is below two cell sizes at the node): the mesh
 //   changes after steps that are not multiples of 16 before the impact, and
 //   the contact's start and end, the peak force and the momentum after the
 //   release are the other run's (measured on 2026-11-30: the same steps

@@ -26,7 +26,9 @@ namespace dyncontact
           std::find(criterion_names.begin(),
                     criterion_names.end(),
                     "contact zone") != criterion_names.end();
-        if (initial_refinements == 0 && !zone_criterion)
+        // (Refinement interval without contact reads the zone's Distance)
+        const bool skips = interval_without_contact > interval;
+        if (initial_refinements == 0 && !zone_criterion && !skips)
           unread.emplace_back("Mesh refinement/Contact zone",
                               "no criterion of Mesh refinement/Criteria is "
                               "the contact zone, and Initial contact "
@@ -36,7 +38,13 @@ namespace dyncontact
                               "it acts at the adaptations during the run, "
                               "and no criterion of Mesh refinement/Criteria "
                               "is the contact zone (Initial contact "
-                              "refinements use its Distance only)");
+                              "refinements and Refinement interval without "
+                              "contact use its Distance only)");
+        if (interval_without_contact > 0 && !skips)
+          unread.emplace_back(
+            "Mesh refinement/Refinement interval without contact",
+            "it equals Refinement interval, so that no adaptation is "
+            "skipped");
         if (error_tolerance > 0.)
           {
             for (const std::string entry :

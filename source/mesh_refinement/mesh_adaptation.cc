@@ -117,7 +117,7 @@ namespace dyncontact
     if (interval_without_contact > interval &&
         this->get_control().get_step() % interval_without_contact != 0)
       {
-        TimerOutput::Scope t(timer, "adaptation: indicators and flags");
+        TimerOutput::Scope t(timer, "adaptation: test of a near contact");
         if (!contact_near(problem, tau))
           return false;
       }

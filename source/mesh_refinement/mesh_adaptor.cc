@@ -56,11 +56,15 @@ namespace dyncontact
       "gap, less the distance its normal velocity towards the other side "
       "covers in Refinement interval steps, is at most Contact "
       "zone/Distance or below two cell sizes at the node), so that the "
-      "contact zone is refined ahead of a contact as without this entry. Contact forces and times do "
-      "not depend on the mesh in a free flight, nor, with Keep body "
-      "motion, does the bodies' motion; the waves in the bodies are "
-      "followed less closely (Front widening and Position tolerance still "
-      "count with Refinement interval). A multiple of Refinement "
+      "contact zone is marked at the same steps as without this entry (the "
+      "margin counts the nodes' velocities, not a moving obstacle's). In "
+      "a free flight no "
+      "contact force acts, and with Keep body motion the transfers do not "
+      "move the bodies: the mesh then resolves only the waves inside the "
+      "bodies, which it follows less closely, and which a later contact "
+      "meets (Front widening and Position tolerance still count with "
+      "Refinement interval). A lasting or resting contact keeps every "
+      "adaptation. A multiple of Refinement "
       "interval, or 0: Refinement "
       "interval always.");
     prm.declare_entry("Minimum level",
@@ -257,8 +261,8 @@ namespace dyncontact
                            std::to_string(interval_without_contact) +
                            " spaces the adaptations of a mesh that adapts "
                            "during the run: it needs Mesh "
-                           "refinement/Refinement interval > 0 (got 0), or "
-                           "0."));
+                           "refinement/Refinement interval > 0 (got 0); or "
+                           "set it to 0."));
     AssertThrow(interval_without_contact % std::max(interval, 1u) == 0,
                 ExcMessage("Mesh refinement/Refinement interval without "
                            "contact must be 0 or a multiple of Mesh "
