@@ -91,10 +91,9 @@ namespace dyncontact
         };
         for (unsigned int p = 0; p < rows.size(); ++p)
           {
-            const double size = std::pow(rows.rows[p].weight, 1. / (dim - 1));
-            // (a gap equal to the distance is in, also after round-off)
-            const double gap = -violation[p];
-            if (gap <= (1. + 1e-10) * distance || gap < 2. * size)
+            if (in_contact_zone<dim>(-violation[p],
+                                     distance,
+                                     rows.rows[p].weight))
               mark(marks, p);
             // (the report is the last step's, on these rows; none before
             // the first step)

@@ -168,13 +168,10 @@ namespace dyncontact
         // (until the next step due by Refinement interval, which asks again)
         const double flight = interval * tau;
         for (unsigned int p = 0; p < rows.size() && !near; ++p)
-          {
-            const double size = std::pow(rows.rows[p].weight, 1. / (dim - 1));
-            // (the contact zone's test, as in its criterion)
-            const double gap =
-              -violation[p] - flight * std::max(closing[p], 0.);
-            near = gap <= (1. + 1e-10) * zone_distance || gap < 2. * size;
-          }
+          near = MeshRefinement::in_contact_zone<dim>(
+            -violation[p] - flight * std::max(closing[p], 0.),
+            zone_distance,
+            rows.rows[p].weight);
       }
     return Utilities::MPI::logical_or(near, this->get_mpi_communicator());
   }

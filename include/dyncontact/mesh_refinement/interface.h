@@ -6,6 +6,8 @@
 #include <dyncontact/base/plugins.h>
 #include <dyncontact/core/simulator_access.h>
 
+#include <cmath>
+
 namespace dealii
 {
   class ParameterHandler;
@@ -95,6 +97,21 @@ namespace dyncontact
         add_scaled(eta, indicators, this->get_mpi_communicator());
       }
     };
+
+    /// Whether a slave node of current gap @p gap (m) is in the contact
+    /// zone: the gap is at most Contact zone/Distance @p distance (up to a
+    /// round-off of 1e-10 of it, so that a gap equal to the distance is in)
+    /// or below two cell sizes at the node, the size from the @p weight of
+    /// its contact row (its share of the slave surface, m^(dim-1)).
+    template <int dim>
+    inline bool
+    in_contact_zone(const double gap,
+                    const double distance,
+                    const double weight)
+    {
+      return gap <= (1. + 1e-10) * distance ||
+             gap < 2. * std::pow(weight, 1. / (dim - 1));
+    }
   } // namespace MeshRefinement
 
   extern template class PluginRegistry<MeshRefinement::Interface>;
