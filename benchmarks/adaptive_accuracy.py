@@ -30,7 +30,7 @@ over time), of the contact-force error (largest over time / peak) and of the pos
 difference in steps, and the ratio of the run times (wall time less the
 comparisons).
 
-Usage, from the repository's top folder after tools/setup.sh (about 17
+Usage, from the repository's top folder after tools/setup.sh (about 18
 minutes on one core):
     benchmarks/adaptive_accuracy.py [build/dyncontact] [--tolerances 1e-3,1e-4]
         [--position-tolerances 1e-3,1e-4] [--error-tolerances 0.2,0.1,0.05]
