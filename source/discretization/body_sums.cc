@@ -10,6 +10,20 @@
 
 namespace dyncontact
 {
+  namespace
+  {
+    /// The entry 3 b + d of the sums for a DoF's slot b dim + d (body b,
+    /// component d; SemiDiscreteSystem::get_owned_dof_slots()).
+    template <int dim>
+    unsigned int
+    sum_entry(const unsigned char slot)
+    {
+      return 3 * (slot / dim) + slot % dim;
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<double>
   body_sums(const SemiDiscreteSystem<dim> &system,
@@ -23,7 +37,7 @@ namespace dyncontact
     const std::vector<unsigned char> &slots  = system.get_owned_dof_slots();
     const double                     *values = M_x.begin();
     for (std::size_t k = 0; k < slots.size(); ++k)
-      sums[3 * (slots[k] / dim) + slots[k] % dim] += values[k];
+      sums[sum_entry<dim>(slots[k])] += values[k];
     Utilities::MPI::sum(sums, communicator, sums);
     return sums;
   }
@@ -50,7 +64,7 @@ namespace dyncontact
     const double                     *m_values = m.begin();
     for (std::size_t k = 0; k < slots.size(); ++k)
       {
-        const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
+        const unsigned int slot = sum_entry<dim>(slots[k]);
         for (std::size_t v = 0; v < xs.size(); ++v)
           sums[v * n + slot] += m_values[k] * xs[v]->begin()[k];
         sums[xs.size() * n + slot] += m_values[k];
@@ -104,7 +118,7 @@ namespace dyncontact
         const auto *entries =
           constraints.get_constraint_entries(owned.nth_index_in_set(k));
         if (entries != nullptr && entries->empty())
-          held[3 * (slots[k] / dim) + slots[k] % dim] = 1.;
+          held[sum_entry<dim>(slots[k])] = 1.;
       }
     Utilities::MPI::max(held, communicator, held);
     for (std::size_t v = 0; v < xs.size(); ++v)
@@ -112,7 +126,7 @@ namespace dyncontact
         double *values = xs[v]->begin();
         for (std::size_t k = 0; k < slots.size(); ++k)
           {
-            const unsigned int slot = 3 * (slots[k] / dim) + slots[k] % dim;
+            const unsigned int slot = sum_entry<dim>(slots[k]);
             if (held[slot] == 0.)
               values[k] += means[v][slot] - now[v][slot];
           }

@@ -157,23 +157,25 @@ namespace dyncontact
         near = near || std::any_of(active->begin(),
                                    active->end(),
                                    [](const char a) { return a != 0; });
+    const MPI_Comm comm = this->get_mpi_communicator();
+    if (Utilities::MPI::logical_or(near, comm))
+      return true;
     // (the rows are this rank's; reading their entries is collective)
-    if (!Utilities::MPI::logical_or(near, this->get_mpi_communicator()))
+    const auto &row_operator = problem.get_contact().get_row_operator();
+    const std::vector<double> violation =
+      row_operator.constraint_values(problem.get_solution());
+    const std::vector<double> closing =
+      row_operator.apply(problem.get_velocity());
+    // (until the next step due by Refinement interval, which asks again)
+    const double flight = interval * tau;
+    for (unsigned int p = 0; p < rows.size() && !near; ++p)
       {
-        const auto &row_operator = problem.get_contact().get_row_operator();
-        const std::vector<double> violation =
-          row_operator.constraint_values(problem.get_solution());
-        const std::vector<double> closing =
-          row_operator.apply(problem.get_velocity());
-        // (until the next step due by Refinement interval, which asks again)
-        const double flight = interval * tau;
-        for (unsigned int p = 0; p < rows.size() && !near; ++p)
-          near = MeshRefinement::in_contact_zone<dim>(
-            -violation[p] - flight * std::max(closing[p], 0.),
-            zone_distance,
-            rows.rows[p].weight);
+        const double gap = -violation[p] - flight * std::max(closing[p], 0.);
+        near             = MeshRefinement::in_contact_zone<dim>(gap,
+                                                    zone_distance,
+                                                    rows.rows[p].weight);
       }
-    return Utilities::MPI::logical_or(near, this->get_mpi_communicator());
+    return Utilities::MPI::logical_or(near, comm);
   }
 
 
