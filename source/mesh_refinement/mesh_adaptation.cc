@@ -169,12 +169,14 @@ namespace dyncontact
     // (until the next step due by Refinement interval, which asks again)
     const double flight = interval * tau;
     for (unsigned int p = 0; p < rows.size() && !near; ++p)
-      {
-        const double gap = -violation[p] - flight * std::max(closing[p], 0.);
-        near             = MeshRefinement::in_contact_zone<dim>(gap,
+      // a node that does not close on the other side comes no nearer before
+      // that step (a receding one after a release: its cells keep the
+      // zone's refinement of the last adaptation, as nothing is adapted)
+      if (closing[p] > 0.)
+        near = MeshRefinement::in_contact_zone<dim>(-violation[p] -
+                                                      flight * closing[p],
                                                     zone_distance,
                                                     rows.rows[p].weight);
-      }
     return Utilities::MPI::logical_or(near, comm);
   }
 
