@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -388,9 +389,15 @@ namespace dyncontact
   {
     std::ostringstream    text;
     std::set<std::string> warned;
+    // (an entry set more than once: the line whose value the run takes,
+    // the last)
+    std::map<std::string, std::string> last_origin;
     for (const auto &[name, origin] : set_entries)
+      last_origin[name] = origin;
+    for (const auto &set_entry : set_entries)
       {
-        std::string reason;
+        const std::string &name = set_entry.first;
+        std::string        reason;
         if (name.rfind("Scene/", 0) == 0 && name != "Scene/Name" &&
             name.rfind(scene_subsection + "/", 0) != 0)
           reason = "the scene is '" + scene_name + "', which reads " +
@@ -400,7 +407,7 @@ namespace dyncontact
               (name == prefix || name.rfind(prefix + "/", 0) == 0))
             reason = why;
         if (!reason.empty() && warned.insert(name).second)
-          text << "   warning: " << origin << ": " << name
+          text << "   warning: " << last_origin[name] << ": " << name
                << " is set, but this run does not read it: " << reason << ".\n";
       }
     return text.str();

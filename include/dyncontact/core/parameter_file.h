@@ -62,7 +62,8 @@ namespace dyncontact
    * name, where it was set: check_for_misplaced_entries()) that a run does
    * not read: those of subsection Scene outside @p scene_subsection (the
    * scene @p scene_name reads its own only), and those that @p unread
-   * names (an entry or a whole subsection, and why), each once.
+   * names (an entry or a whole subsection, and why), each once, at the
+   * last line that sets it (whose value the run would take).
    */
   std::string
   unread_entry_warnings(
