@@ -164,19 +164,32 @@ namespace dyncontact
     const auto &row_operator = problem.get_contact().get_row_operator();
     const std::vector<double> violation =
       row_operator.constraint_values(problem.get_solution());
-    const std::vector<double> closing =
+    const std::vector<double> normal_velocity =
       row_operator.apply(problem.get_velocity());
     // (until the next step due by Refinement interval, which asks again)
     const double flight = interval * tau;
+    const double t      = this->get_control().get_time();
     for (unsigned int p = 0; p < rows.size() && !near; ++p)
-      // a node that does not close on the other side comes no nearer before
-      // that step (a receding one after a release: its cells keep the
-      // zone's refinement of the last adaptation, as nothing is adapted)
-      if (closing[p] > 0.)
-        near = MeshRefinement::in_contact_zone<dim>(-violation[p] -
-                                                      flight * closing[p],
-                                                    zone_distance,
-                                                    rows.rows[p].weight);
+      {
+        // how far the gap closes until then: the node's normal velocity,
+        // and a moving obstacle's own motion
+        const ContactRow &row    = rows.rows[p];
+        double            closes = flight * normal_velocity[p];
+        if (row.pair < rows.motions.size() &&
+            rows.motions[row.pair].gap_and_normal)
+          {
+            const auto &gap_at = rows.motions[row.pair].gap_and_normal;
+            closes += gap_at(row.position, t).first -
+                      gap_at(row.position, t + flight).first;
+          }
+        // a node whose gap does not close comes no nearer before that step
+        // (a receding one after a release: its cells keep the zone's
+        // refinement of the last adaptation, as nothing is adapted)
+        if (closes > 0.)
+          near = MeshRefinement::in_contact_zone<dim>(-violation[p] - closes,
+                                                      zone_distance,
+                                                      row.weight);
+      }
     return Utilities::MPI::logical_or(near, comm);
   }
 

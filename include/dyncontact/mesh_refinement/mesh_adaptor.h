@@ -205,11 +205,11 @@ namespace dyncontact
   private:
     /// Whether a contact is near, over all ranks: a slave node of the last
     /// step's active sets (the displacement's or the L2 projection's), or
-    /// one that closes on the other side (a positive normal velocity) and
-    /// whose gap, less the distance it closes in "Refinement interval"
-    /// steps of @p tau (until the next step that asks again), is in the
-    /// contact zone (at most its Distance, or below two cell sizes at the
-    /// node).
+    /// one whose gap closes (by the node's normal velocity and a moving
+    /// obstacle's own motion) and, less the distance it closes in
+    /// "Refinement interval" steps of @p tau (until the next step that asks
+    /// again), is in the contact zone (at most its Distance, or below two
+    /// cell sizes at the node).
     bool
     contact_near(const DiscreteProblem<dim> &problem, const double tau) const;
 
