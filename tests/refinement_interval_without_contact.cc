@@ -146,8 +146,7 @@ main(int argc, char **argv)
   dyncontact::MPIInitFinalize mpi(argc, argv);
   using namespace testing;
 
-  const Run    every = simulate(0), sparse = simulate(16);
-  const double tau = 1. / 256.;
+  const Run every = simulate(0), sparse = simulate(16);
   log() << "every 2 steps: the mesh changes after other steps than "
         << "multiples of 16 in the flight (more than 5 times): "
         << check(every.flight_changes > 5) << "\n";

@@ -9,7 +9,6 @@
 #include <dyncontact/time_stepping/simulation_control.h>
 
 #include <algorithm>
-#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -168,27 +167,23 @@ namespace dyncontact
       row_operator.apply(problem.get_velocity());
     // (until the next step due by Refinement interval, which asks again)
     const double flight = interval * tau;
-    const double t      = this->get_control().get_time();
+    // a moving obstacle's own motion along the rows' normals until then,
+    // which opens the gap (as in a step: ContactRows::normal_motion())
+    const double              t = this->get_control().get_time();
+    const std::vector<double> obstacle_motion =
+      rows.obstacles_move() ? rows.normal_motion(t, t + flight) :
+                              std::vector<double>(rows.size(), 0.);
     for (unsigned int p = 0; p < rows.size() && !near; ++p)
       {
-        // how far the gap closes until then: the node's normal velocity,
-        // and a moving obstacle's own motion
-        const ContactRow &row    = rows.rows[p];
-        double            closes = flight * normal_velocity[p];
-        if (row.pair < rows.motions.size() &&
-            rows.motions[row.pair].gap_and_normal)
-          {
-            const auto &gap_at = rows.motions[row.pair].gap_and_normal;
-            closes += gap_at(row.position, t).first -
-                      gap_at(row.position, t + flight).first;
-          }
+        // how far the gap closes until then
+        const double closes = flight * normal_velocity[p] - obstacle_motion[p];
         // a node whose gap does not close comes no nearer before that step
         // (a receding one after a release: its cells keep the zone's
         // refinement of the last adaptation, as nothing is adapted)
         if (closes > 0.)
           near = MeshRefinement::in_contact_zone<dim>(-violation[p] - closes,
                                                       zone_distance,
-                                                      row.weight);
+                                                      rows.rows[p].weight);
       }
     return Utilities::MPI::logical_or(near, comm);
   }

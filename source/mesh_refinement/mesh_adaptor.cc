@@ -233,7 +233,8 @@ namespace dyncontact
     keep_motion          = prm.get_bool("Keep body motion");
     split_by_volume      = prm.get("Error tolerance split") == "by volume";
     const auto selected  = Utilities::split_string_list(prm.get("Criteria"));
-    // (the contact zone criterion's distance: contact_near() waits for it)
+    // (the contact zone's Distance, which contact_near() reads with or
+    // without the contact zone criterion)
     prm.enter_subsection("Contact zone");
     zone_distance = prm.get_double("Distance");
     prm.leave_subsection();
