@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Marking by an error tolerance over two decades: the Hertz drop of
 prm/hertz_drop_adaptive.prm (to 1 s) with Mesh refinement/Error tolerance
-delta = 0.4 to 0.004 and Maximum level 6, each compared at the output times
+delta = 0.4 to 0.002 and Maximum level 6, each compared at the output times
 with the states of the uniform level-6 mesh (Reference solution; about
 550 000 DoFs, the same tau). For each delta the script prints the largest
 estimated error (the energy norm relative to sqrt(E), at the adaptations,
@@ -14,7 +14,7 @@ kept the tolerance from being met.
 Usage, from the repository's top folder after tools/setup.sh (about 6
 minutes on one core; the reference run about 2 of them):
     benchmarks/tolerance_decades.py [build/dyncontact]
-        [--tolerances 0.4,0.2,0.1,0.05,0.02,0.01,0.004] [--level 6]"""
+        [--tolerances 0.4,0.2,0.1,0.05,0.02,0.01,0.004,0.002] [--level 6]"""
 import options
 import csv
 import math
@@ -26,7 +26,7 @@ import sys
 arguments = sys.argv[1:]
 tolerances = options.take_option(
     arguments, "--tolerances", lambda v: [t for t in v.split(",") if t],
-    ["0.4", "0.2", "0.1", "0.05", "0.02", "0.01", "0.004"])
+    ["0.4", "0.2", "0.1", "0.05", "0.02", "0.01", "0.004", "0.002"])
 level = options.take_option(arguments, "--level", int, 6)
 executable = os.path.abspath(arguments[0] if arguments else "build/dyncontact")
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

@@ -1,9 +1,9 @@
 // Marking by a tolerance: the estimated energy of the error, summed over
 // the cells, against the tolerance's share delta^2 E of the energy; the
-// cells with the largest estimates are refined until the sum would be
-// below half of it (Doerfler's marking, deal.II's fixed fraction of the
-// error), or each cell above its share by volume; the others coarsened where
-// the coarsening limit allows.
+// cells below Maximum level with the largest estimates are refined until
+// the sum would be below half of it (Doerfler's marking, deal.II's fixed
+// fraction of the error), or each cell above its share by volume; the
+// others coarsened where the coarsening limit allows.
 
 #include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/fe/fe.h>
@@ -23,13 +23,16 @@ namespace dyncontact
    * (lambda + 2 mu) k_K(u)^2 (J, or J/m in 2D;
    * MeshRefinement::energy_error_indicators()), summed: S. Split
    * "globally": if S exceeds
-   * T = delta^2 E, the cells with the largest eta_K are refined whose sum
-   * is at least (S - T/2) / (1 - 4^-p): refining a cell divides its error
-   * energy by about 4^p, so that S falls to about T/2 (all cells if that
-   * is more than S). Split "by volume": the cells with eta_K > delta^2 E
-   * |K| / |bodies| are refined. Those at Maximum level are counted
-   * instead. All other
-   * cells are flagged for coarsening, which limit_coarsening() then
+   * T = delta^2 E, the cells below Maximum level with the largest eta_K
+   * are refined whose sum is at least (S - T/2) / (1 - 4^-p): refining a
+   * cell divides its error energy by about 4^p, so that S falls to about
+   * T/2; if that is out of reach, all of them but those of the smallest
+   * eta_K whose sum is below T/4 (the cells of S's last quarter of T need
+   * no refinement, however far off S is), which are then kept as they are.
+   * Split "by volume": the cells with eta_K > delta^2 E |K| / |bodies| are
+   * refined. Cells at Maximum level that the threshold would refine are
+   * counted instead. All other cells (out of reach: those of a zero
+   * estimate) are flagged for coarsening, which limit_coarsening() then
    * refuses to every family whose coarsening would remove more than
    * delta^2 / 4 of its share of E (or Coarsening tolerance).
    */
@@ -45,32 +48,50 @@ namespace dyncontact
     MeshRefinement::energy_error_indicators(*this, eta);
     const auto [total, volume] = energy;
 
-    // this rank's estimates, their sum over all ranks
-    std::vector<float> owned;
+    // this rank's estimates, and those of the cells below Maximum level
+    // (which a refinement can reduce); their sums over all ranks
+    std::vector<float> owned, refinable;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
-        owned.push_back(eta[cell->active_cell_index()]);
-    double sum = 0.;
+        {
+          owned.push_back(eta[cell->active_cell_index()]);
+          if (cell->level() < int(max_level))
+            refinable.push_back(owned.back());
+        }
+    double sum = 0., sum_refinable = 0.;
     for (const float e : owned)
       sum += e;
-    sum = Utilities::MPI::sum(sum, comm);
+    for (const float e : refinable)
+      sum_refinable += e;
+    sum           = Utilities::MPI::sum(sum, comm);
+    sum_refinable = Utilities::MPI::sum(sum_refinable, comm);
 
-    // global: the threshold above which the cells hold the share of S to
-    // refine; by volume: each cell's share of delta^2 E
-    const double       allowed   = error_tolerance * error_tolerance * total;
-    const unsigned int p         = this->get_system().get_fe().degree;
-    const double       gain      = 1. - std::pow(4., -double(p));
-    double             threshold = std::numeric_limits<double>::max();
+    // global: the threshold above which the refinable cells hold the share
+    // of S to refine; by volume: each cell's share of delta^2 E
+    const double       allowed     = error_tolerance * error_tolerance * total;
+    const unsigned int p           = this->get_system().get_fe().degree;
+    const double       gain        = 1. - std::pow(4., -double(p));
+    double             threshold   = std::numeric_limits<double>::max();
+    bool               refine_none = false, out_of_reach = false;
     if (split_by_volume)
       threshold = allowed / (volume > 0. ? volume : 1.); // per m^dim
     else if (sum > allowed)
       {
-        const double share = (sum - 0.5 * allowed) / gain;
-        if (share >= sum)
-          threshold = -1.; // every cell
+        // what the refinement must remove, taken from the refinable cells
+        // only; out of reach, all but the smallest estimates whose sum is
+        // below a quarter of delta^2 E: they need no refinement for the
+        // tolerance, however far off it is (all cells of a nonzero estimate
+        // refined would refine wherever a wave has reached in round-off),
+        // and they are not coarsened either (the mesh is too coarse for
+        // the tolerance as it is)
+        const double needed = (sum - 0.5 * allowed) / gain;
+        const double share  = std::min(needed, sum_refinable - 0.25 * allowed);
+        out_of_reach        = needed > share;
+        if (share <= 0.)
+          threshold = -1.; // nothing to refine; each cell counted below
         else
           {
-            const Vector<float> local(owned.begin(), owned.end());
+            const Vector<float> local(refinable.begin(), refinable.end());
             threshold =
               Thresholds::RefineAndCoarsenFixedFraction::compute_threshold(
                 local,
@@ -78,6 +99,7 @@ namespace dyncontact
                 share,
                 comm);
           }
+        refine_none = share <= 0.;
       }
 
     unsigned int above = 0;
@@ -89,11 +111,14 @@ namespace dyncontact
           if (eta_K > threshold * scale && eta_K > 0.)
             {
               if (cell->level() < int(max_level))
-                cell->set_refine_flag();
+                {
+                  if (!refine_none)
+                    cell->set_refine_flag();
+                }
               else
                 ++above;
             }
-          else
+          else if (!out_of_reach || eta_K <= 0.)
             cell->set_coarsen_flag();
         }
     return {total > 0. ? std::sqrt(sum / total) : 0.,
