@@ -26,13 +26,14 @@ namespace dyncontact
    * T = delta^2 E, the cells below Maximum level with the largest eta_K
    * are refined whose sum is at least (S - T/2) / (1 - 4^-p): refining a
    * cell divides its error energy by about 4^p, so that S falls to about
-   * T/2; if that is out of reach, all of them but those of the smallest
-   * eta_K whose sum is below T/4 (the cells of S's last quarter of T need
-   * no refinement, however far off S is), which are then kept as they are.
+   * T/2, but for those of the smallest eta_K whose sum is below T/4 (the
+   * cells of S's last quarter of T need no refinement, however far off S
+   * is); where the share reaches into them, they are kept as they are.
    * Split "by volume": the cells with eta_K > delta^2 E |K| / |bodies| are
-   * refined. Cells at Maximum level that the threshold would refine are
-   * counted instead. All other cells (out of reach: those of a zero
-   * estimate) are flagged for coarsening, which limit_coarsening() then
+   * refined. Cells at Maximum level that the rule would refine without the
+   * level limit are counted instead. All other cells (where the share
+   * reaches into the last quarter: those of a zero estimate) are flagged
+   * for coarsening, which limit_coarsening() then
    * refuses to every family whose coarsening would remove more than
    * delta^2 / 4 of its share of E (or Coarsening tolerance).
    */
@@ -72,53 +73,56 @@ namespace dyncontact
     const unsigned int p           = this->get_system().get_fe().degree;
     const double       gain        = 1. - std::pow(4., -double(p));
     double             threshold   = std::numeric_limits<double>::max();
-    bool               refine_none = false, out_of_reach = false;
+    double             counted     = threshold;
+    bool               refine_none = false, far_off = false;
+    // the threshold above which the cells of @p estimates hold @p share of
+    // S (over all ranks)
+    const auto threshold_of = [&](const std::vector<float> &estimates,
+                                  const double              share) {
+      const Vector<float> local(estimates.begin(), estimates.end());
+      return Thresholds::RefineAndCoarsenFixedFraction::compute_threshold(
+        local,
+        Thresholds::compute_global_min_and_max_at_root(local, comm),
+        share,
+        comm);
+    };
     if (split_by_volume)
-      threshold = allowed / (volume > 0. ? volume : 1.); // per m^dim
+      threshold = counted = allowed / (volume > 0. ? volume : 1.); // per m^dim
     else if (sum > allowed)
       {
         // what the refinement must remove, taken from the refinable cells
-        // only; out of reach, all but the smallest estimates whose sum is
-        // below a quarter of delta^2 E: they need no refinement for the
-        // tolerance, however far off it is (all cells of a nonzero estimate
-        // refined would refine wherever a wave has reached in round-off),
-        // and they are not coarsened either (the mesh is too coarse for
-        // the tolerance as it is)
+        // only, but for the smallest estimates whose sum is below a quarter
+        // of delta^2 E: they need no refinement for the tolerance, however
+        // far off it is (all cells of a nonzero estimate refined would
+        // refine wherever a wave has reached in round-off). Where the share
+        // reaches into them (for p = 1 whenever S > 1.25 delta^2 E, sooner
+        // with cells at Maximum level), the mesh is too coarse for the
+        // tolerance to coarsen them either.
         const double needed = (sum - 0.5 * allowed) / gain;
         const double share  = std::min(needed, sum_refinable - 0.25 * allowed);
-        out_of_reach        = needed > share;
-        if (share <= 0.)
-          threshold = -1.; // nothing to refine; each cell counted below
-        else
-          {
-            const Vector<float> local(refinable.begin(), refinable.end());
-            threshold =
-              Thresholds::RefineAndCoarsenFixedFraction::compute_threshold(
-                local,
-                Thresholds::compute_global_min_and_max_at_root(local, comm),
-                share,
-                comm);
-          }
-        refine_none = share <= 0.;
+        far_off             = needed > share;
+        refine_none         = share <= 0.;
+        threshold = refine_none ? -1. : threshold_of(refinable, share);
+        // the cells at Maximum level counted: those that the same rule
+        // would refine without the level limit
+        counted = threshold_of(owned, std::min(needed, sum - 0.25 * allowed));
       }
 
     unsigned int above = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const double eta_K = eta[cell->active_cell_index()];
-          const double scale = split_by_volume ? cell->measure() : 1.;
+          const double eta_K      = eta[cell->active_cell_index()];
+          const double scale      = split_by_volume ? cell->measure() : 1.;
+          const bool   at_maximum = cell->level() >= int(max_level);
+          if (at_maximum && eta_K > counted * scale && eta_K > 0.)
+            ++above;
           if (eta_K > threshold * scale && eta_K > 0.)
             {
-              if (cell->level() < int(max_level))
-                {
-                  if (!refine_none)
-                    cell->set_refine_flag();
-                }
-              else
-                ++above;
+              if (!at_maximum && !refine_none)
+                cell->set_refine_flag();
             }
-          else if (!out_of_reach || eta_K <= 0.)
+          else if (!far_off || eta_K <= 0.)
             cell->set_coarsen_flag();
         }
     return {total > 0. ? std::sqrt(sum / total) : 0.,
