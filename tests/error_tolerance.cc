@@ -142,6 +142,44 @@ main(int argc, char **argv)
             << "\n";
     }
 
+  // cells_above_tolerance counts the cells at Maximum level that the same
+  // rule would refine without the level limit: a run that cannot refine
+  // (Minimum level = Maximum level = 1) counts at its first adaptation
+  // that counts or refines anything what a run with Maximum level 2,
+  // identical until then, refines there (3 new cells for each in 2D; no
+  // other criterion flags: Kelly's indicator is not used by the
+  // tolerance). Measured: 16 at the second adaptation after the contact
+  // (at the first, 16 cells of equal estimates hold the error and the
+  // threshold, their common value, refines none). Until 2026-12-01 the
+  // count took every cell of a nonzero estimate where nothing was left to
+  // refine: 16 at the first adaptation, where the other run refines none,
+  // and 112 at the second.
+  {
+    const auto count_run = [&](const unsigned int max_level) {
+      std::ostringstream s;
+      s << "subsection Mesh\n  set Initial global refinements = 1\nend\n"
+        << "subsection Mesh refinement\n  set Refinement interval = 2\n"
+        << "  set Minimum level = 1\n  set Maximum level = " << max_level
+        << "\n  set Criteria = kelly velocity\n"
+        << "  set Error tolerance = 0.05\nend\n";
+      return run(bar_prm(2, "N-CS++", 40, 0.0125, 0.3, s.str()));
+    };
+    const Statistics fixed = count_run(1), free = count_run(2);
+    const auto      &counted = fixed.column("cells_above_tolerance");
+    const auto      &cells   = free.column("cells");
+    bool             found = false, same = false;
+    for (unsigned int i = 1; !found && i < counted.size() && i < cells.size();
+         ++i)
+      if (counted[i] > 0. || cells[i] != cells[i - 1])
+        {
+          found = true;
+          same  = counted[i] > 0. && cells[i] - cells[i - 1] == 3. * counted[i];
+        }
+    log() << "Bar, Error tolerance 0.05 at Maximum level 1: the cells counted "
+             "at the level limit are those refined without it: "
+          << check(same) << "\n";
+  }
+
   // halving the tolerance on the Hertz drop, against the uniform mesh of
   // its Maximum level
   std::ifstream     in(std::string(DYNCONTACT_PRM_DIR) +
