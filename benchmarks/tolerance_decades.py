@@ -11,8 +11,8 @@ time less the comparisons with the reference states (timer section
 "reference states"), and whether summary.txt says that the level limit
 kept the tolerance from being met.
 
-Usage, from the repository's top folder after tools/setup.sh (about 6
-minutes on one core; the reference run about 2 of them):
+Usage, from the repository's top folder after tools/setup.sh (about 4
+minutes on one core; the reference run about 3 of them):
     benchmarks/tolerance_decades.py [build/dyncontact]
         [--tolerances 0.4,0.2,0.1,0.05,0.02,0.01,0.004,0.002] [--level 6]"""
 import options

@@ -172,15 +172,17 @@ namespace dyncontact
       "cell's error energy by about 4^p), but for the cells of the smallest "
       "eta_K that sum to less than a quarter of delta^2 E (where the share "
       "reaches into them, for p = 1 whenever S > 1.25 delta^2 E, they are "
-      "neither refined nor coarsened); every other cell is coarsened where the coarsening "
-      "limit allows (Coarsening tolerance, or delta^2 / 4 without one), so "
-      "that the estimated error in the energy norm relative to sqrt(E), "
+      "neither refined nor coarsened); every other cell is coarsened where "
+      "the coarsening limit allows (Coarsening tolerance, or delta^2 / 4 "
+      "without one), so that the estimated error in the energy norm "
+      "relative to sqrt(E), "
       "sqrt(S / E), stays about delta. Refine fraction, Coarsen fraction "
       "and the indicators of Criteria are then not used (the contact "
       "zone's and the curved boundary's flags are). Dimensionless, 0 to 1; 0: the fractions. "
       "Statistics columns estimated_error (sqrt(S / E) at the adaptations, "
-      "before they refine) and cells_above_tolerance (cells the tolerance "
-      "would refine that are at Maximum level) when > 0.");
+      "before they refine) and cells_above_tolerance (cells at Maximum "
+      "level that the tolerance would refine without the level limit) when "
+      "> 0.");
     prm.declare_entry(
       "Error tolerance split",
       "global",
