@@ -112,12 +112,19 @@ namespace dyncontact
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const double eta_K      = eta[cell->active_cell_index()];
-          const double scale      = split_by_volume ? cell->measure() : 1.;
-          const bool   at_maximum = cell->level() >= int(max_level);
-          if (at_maximum && eta_K > counted * scale && eta_K > 0.)
+          const double eta_K = eta[cell->active_cell_index()];
+          // above a threshold: by volume, the cell's share; globally, as
+          // deal.II's refine() reads compute_threshold()'s result, which is
+          // capped at the largest estimate (where cells of equal estimates
+          // hold the share, the threshold is their value)
+          const auto above_threshold = [&](const double t) {
+            return eta_K > 0. &&
+                   (split_by_volume ? eta_K > t * cell->measure() : eta_K >= t);
+          };
+          const bool at_maximum = cell->level() >= int(max_level);
+          if (at_maximum && above_threshold(counted))
             ++above;
-          if (eta_K > threshold * scale && eta_K > 0.)
+          if (above_threshold(threshold))
             {
               if (!at_maximum && !refine_none)
                 cell->set_refine_flag();
