@@ -50,22 +50,28 @@ namespace dyncontact
     const auto [total, volume] = energy;
 
     // this rank's estimates, and those of the cells below Maximum level
-    // (which a refinement can reduce); their sums over all ranks
+    // (which a refinement can reduce); their sums over all ranks, and
+    // whether a cell at Maximum level has a nonzero estimate on any
     std::vector<float> owned, refinable;
+    double             sum = 0., sum_refinable = 0.;
+    bool               at_limit = false;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          owned.push_back(eta[cell->active_cell_index()]);
+          const float e = eta[cell->active_cell_index()];
+          owned.push_back(e);
+          sum += e;
           if (cell->level() < int(max_level))
-            refinable.push_back(owned.back());
+            {
+              refinable.push_back(e);
+              sum_refinable += e;
+            }
+          else
+            at_limit = at_limit || e > 0.f;
         }
-    double sum = 0., sum_refinable = 0.;
-    for (const float e : owned)
-      sum += e;
-    for (const float e : refinable)
-      sum_refinable += e;
     sum           = Utilities::MPI::sum(sum, comm);
     sum_refinable = Utilities::MPI::sum(sum_refinable, comm);
+    at_limit      = Utilities::MPI::logical_or(at_limit, comm);
 
     // global: the threshold above which the refinable cells hold the share
     // of S to refine; by volume: each cell's share of delta^2 E
@@ -104,8 +110,10 @@ namespace dyncontact
         refine_none         = share <= 0.;
         threshold = refine_none ? -1. : threshold_of(refinable, share);
         // the cells at Maximum level counted: those that the same rule
-        // would refine without the level limit
-        counted = threshold_of(owned, std::min(needed, sum - 0.25 * allowed));
+        // would refine without the level limit (none to count if none has
+        // an estimate)
+        if (at_limit)
+          counted = threshold_of(owned, std::min(needed, sum - 0.25 * allowed));
       }
 
     unsigned int above = 0;
