@@ -109,9 +109,16 @@ main(int argc, char **argv)
      "subsection Mesh refinement\n  set Front widening = 1\nend\n"},
     {"numerical_dissipation_above_half",
      "subsection Time integration\n  set Numerical dissipation = 0.6\nend\n"},
-    {"consistent_mass_fraction_above_one",
+    {"consistent_mass_fraction_above_range",
+     "subsection Time integration\n  set Mass matrix = blended\n"
+     "  set Consistent mass fraction = 2\nend\n"},
+    {"consistent_mass_fraction_singular",
      "subsection Time integration\n  set Mass matrix = blended\n"
      "  set Consistent mass fraction = 1.5\nend\n"},
+    {"consistent_mass_fraction_above_one_quadratic",
+     "set Polynomial degree = 2\n"
+     "subsection Time integration\n  set Mass matrix = blended\n"
+     "  set Consistent mass fraction = 1.2\nend\n"},
     {"numerical_dissipation_static",
      "subsection Time integration\n  set Scheme = static\n"
      "  set Numerical dissipation = 0.1\nend\n"},

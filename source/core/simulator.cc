@@ -54,6 +54,14 @@ namespace dyncontact
     discretization.system.lumped_mass = time_integration.lumped_mass;
     discretization.system.consistent_mass_fraction =
       time_integration.consistent_mass_fraction;
+    AssertThrow(time_integration.consistent_mass_fraction <= 1. ||
+                  parameters.degree == 1,
+                ExcMessage("Time integration/Consistent mass fraction above "
+                           "1 (a mass beyond the consistent one, by a "
+                           "two-point rule per axis) is for Polynomial "
+                           "degree = 1 only; the range is 0 to 1 for "
+                           "Polynomial degree = " +
+                           std::to_string(parameters.degree) + "."));
     discretization.numerical_dissipation =
       time_integration.numerical_dissipation;
     discretization.serial_triangulation = parameters.serial_triangulation;

@@ -40,6 +40,7 @@ namespace dyncontact
         , consistent_fraction(lumped_mass ? 0. : consistent_fraction)
         , lumped_fraction(lumped_mass ? 1. : 1. - consistent_fraction)
         , quadrature(fe.degree + 1)
+        , beyond_consistent_quadrature(two_point_rule(consistent_fraction))
         , face_quadrature(fe.degree + 1)
         , lumped_face_quadrature(fe.degree + 1)
         , fe_values(mapping,
@@ -60,6 +61,10 @@ namespace dyncontact
                        scalar_fe,
                        QGaussLobatto<dim>(fe.degree + 1),
                        update_values | update_JxW_values)
+        , beyond_consistent_values(mapping,
+                                   scalar_fe,
+                                   beyond_consistent_quadrature,
+                                   update_values | update_JxW_values)
         , dofs_per_cell(fe.n_dofs_per_cell())
         , n_nodes(scalar_fe.n_dofs_per_cell())
         , scalar_mass(lumped_mass ? 0 : n_nodes * n_nodes)
@@ -92,18 +97,27 @@ namespace dyncontact
         fe_values.reinit(cell);
         if (lumped_fraction > 0.)
           nodal_values.reinit(cell);
+        if (consistent_fraction > 1.)
+          beyond_consistent_values.reinit(cell);
         bool positive = true;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           if (!(fe_values.JxW(q) > 0.))
             positive = false;
+        if (consistent_fraction > 1.)
+          for (unsigned int q = 0; q < beyond_consistent_quadrature.size(); ++q)
+            if (!(beyond_consistent_values.JxW(q) > 0.))
+              positive = false;
         // a translation of the cell before has its values and JxW
         // (FEValues keeps them), hence with the same density its scalar
         // mass and load, and the same element mass matrix
         const bool same_volume_terms =
           have_volume_terms && rho == volume_rho &&
           fe_values.get_cell_similarity() == CellSimilarity::translation &&
-          (lumped_fraction == 0. ||
-           nodal_values.get_cell_similarity() == CellSimilarity::translation);
+          (lumped_fraction <= 0. ||
+           nodal_values.get_cell_similarity() == CellSimilarity::translation) &&
+          (consistent_fraction <= 1. ||
+           beyond_consistent_values.get_cell_similarity() ==
+             CellSimilarity::translation);
         if (!same_volume_terms)
           volume_terms(rho);
         have_volume_terms = true;
@@ -124,6 +138,28 @@ namespace dyncontact
       Vector<double>     boundary_weights;
 
     private:
+      /**
+       * For linear elements and 1 < @p beta < 3/2: the tensor product of
+       * the two-point rule at 1/2 -+ a/2, a = sqrt(1 - 2 beta / 3), with
+       * weights 1/2. In 1D its mass matrix is (1 - beta) times the lumped
+       * plus beta times the consistent one (a = 1: Gauss-Lobatto, the
+       * lumped mass; a = 1/sqrt(3): Gauss, the consistent mass), in 2D
+       * and 3D the tensor product of those, positive definite for every
+       * beta < 3/2 (the blend's formula itself is not above 9/8 in 2D).
+       * Otherwise (unused) the one-point rule.
+       */
+      static Quadrature<dim>
+      two_point_rule(const double beta)
+      {
+        if (!(beta > 1.))
+          return QGauss<dim>(1);
+        const double        a = std::sqrt(1. - 2. * beta / 3.);
+        const Quadrature<1> rule({Point<1>(0.5 - a / 2.),
+                                  Point<1>(0.5 + a / 2.)},
+                                 {0.5, 0.5});
+        return Quadrature<dim>(rule);
+      }
+
       /// int phi_k (scalar_load) and the element mass matrix (lumped:
       /// its diagonal) of the present cell with density @p rho
       void
@@ -149,15 +185,19 @@ namespace dyncontact
           }
         if (lumped_mass)
           return;
-        // the consistent part beta M_K (Gauss, the load's quadrature)
+        // the consistent part beta M_K (Gauss, the load's quadrature), or
+        // beyond the consistent mass (beta > 1) all of M_K by the two-point
+        // rule of two_point_rule()
         mass = 0.;
         std::fill(scalar_mass.begin(), scalar_mass.end(), 0.);
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
+        const FEValues<dim> &values =
+          consistent_fraction > 1. ? beyond_consistent_values : fe_values;
+        for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
           for (unsigned int k = 0; k < n_nodes; ++k)
             for (unsigned int l = 0; l < n_nodes; ++l)
-              scalar_mass[k * n_nodes + l] +=
-                rho * fe_values.shape_value(k, q) *
-                fe_values.shape_value(l, q) * fe_values.JxW(q);
+              scalar_mass[k * n_nodes + l] += rho * values.shape_value(k, q) *
+                                              values.shape_value(l, q) *
+                                              values.JxW(q);
         if (lumped_fraction > 0.)
           {
             for (double &entry : scalar_mass)
@@ -207,12 +247,14 @@ namespace dyncontact
       /// (lumped: 0 and 1; consistent: 1 and 0)
       const double                 consistent_fraction, lumped_fraction;
       const QGauss<dim>            quadrature;
+      const Quadrature<dim>        beyond_consistent_quadrature;
       const QGauss<dim - 1>        face_quadrature;
       const QGaussLobatto<dim - 1> lumped_face_quadrature;
       FEValues<dim>                fe_values;
       FEFaceValues<dim>            face_values;
       FEFaceValues<dim>            lumped_face_values;
       FEValues<dim>                nodal_values;
+      FEValues<dim>                beyond_consistent_values;
       const unsigned int           dofs_per_cell;
       const unsigned int           n_nodes;
       /// component and scalar shape function of each shape function
