@@ -6,7 +6,9 @@ tau = h/2c with h the cell size, 8 free and 8 contact steps, no VTU): the
 same number of nodes for every p (N = 120/p cells along, N/5 across, about
 2.3e5 DoFs; --cells M sets 120 to M; --tau-ratio R sets tau = R h/c, and
 the run to 4 free and 4 contact steps if R > 1; --mass blended or
-consistent sets Time integration/Mass matrix instead of lumped). For each p it runs the
+consistent sets Time integration/Mass matrix instead of lumped, --fraction
+F its Consistent mass fraction, for blended; --assembled-preconditioner
+P the assembled S's Preconditioner instead of automatic). For each p it runs the
 assembled S ('Preconditioner = automatic': Jacobi, or AMG where S is far
 from its mass), the matrix-free S with Jacobi and, for p >= 2, the
 matrix-free S with the p-multigrid ('Preconditioner = multigrid'). For each
@@ -20,7 +22,8 @@ matrix-free / assembled and multigrid / assembled measured in this run, and
 each contact step per DoF against the assembled p = 1 step.
 Usage, from the repository's top folder after tools/setup.sh:
     benchmarks/step_operator.py [build/dyncontact] [--cells M]
-                                [--tau-ratio R] [--mass M] [p ...]"""
+                                [--tau-ratio R] [--mass M] [--fraction F]
+                                [--assembled-preconditioner P] [p ...]"""
 import csv
 import os
 import re
@@ -35,6 +38,14 @@ tau_ratio = take_option(arguments, "--tau-ratio", float, 0.5)
 mass = take_option(arguments, "--mass", str, "lumped")
 if mass not in ("lumped", "blended", "consistent"):
     sys.exit("step_operator: --mass must be lumped, blended or consistent")
+fraction = take_option(arguments, "--fraction", float, None)
+if fraction is not None and mass != "blended":
+    sys.exit("step_operator: --fraction is for --mass blended")
+assembled_preconditioner = take_option(arguments, "--assembled-preconditioner",
+                                       str, "automatic")
+if assembled_preconditioner not in ("automatic", "Jacobi", "AMG"):
+    sys.exit("step_operator: --assembled-preconditioner must be automatic, "
+             "Jacobi or AMG")
 steps = 8 if tau_ratio <= 1 else 4
 executable = arguments[0] if arguments else "build/dyncontact"
 degrees = [int(p) for p in arguments[1:]] or [1, 2, 3]
@@ -48,7 +59,8 @@ def run(p, step_matrix, preconditioner):
     tau = tau_ratio / cells
     directory = "results-step-operator/bar3d-p%d-%s-%s-%g%s" % (
         p, step_matrix, preconditioner, tau_ratio,
-        "" if mass == "lumped" else "-" + mass)
+        "" if mass == "lumped" else "-" + mass) + (
+        "" if fraction is None else "-%g" % fraction)
     prm = directory + ".prm"
     with open(prm, "w") as f:
         f.write("""set Dimension = 3
@@ -67,7 +79,7 @@ subsection Time integration
   set Time step = %.17g
   set End time = %.17g
   set Mass matrix = %s
-end
+%send
 subsection Contact solver
   set Step matrix = %s
   set Preconditioner = %s
@@ -76,6 +88,7 @@ subsection Output
   set Write vtu = false
 end
 """ % (p, directory, cells, steps * tau, tau, 2 * steps * tau, mass,
+       "" if fraction is None else "  set Consistent mass fraction = %.17g\n" % fraction,
        step_matrix, preconditioner))
     result = subprocess.run(["/usr/bin/time", "-v", executable, prm], env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -101,10 +114,11 @@ end
                 preconditioner=used, rss=rss / dofs / 1024.)
 
 
-choices = [("assembled", "automatic"), ("matrix-free", "automatic"),
+choices = [("assembled", assembled_preconditioner), ("matrix-free", "automatic"),
            ("matrix-free", "multigrid")]
 results = {}
-print("tau = %g h/c, %s mass" % (tau_ratio, mass))
+print("tau = %g h/c, %s mass%s" % (tau_ratio, mass, "" if fraction is None
+                                   else " (fraction %g)" % fraction))
 print("%2s %12s %8s %9s %9s %12s %7s %11s %8s" %
       ("p", "step matrix", "DoFs", "set-up", "c. step", "us/(DoF st)",
        "CG/st", "prec.", "RSS/DoF"))

@@ -18,7 +18,9 @@ Scenes and what is measured (errors relative, except times and positions):
   dissipation = 0.05 (doc/algorithms.md), the dashed lines, and for p = 1
   with Mass matrix = blended (Consistent mass fraction 0.75 = 1/2 +
   (c tau/h)^2, the dispersion-reduced mass), the dash-dotted lines, up to
-  twice the finest mesh's cells.
+  twice the finest mesh's cells; and with tau = 0.98 h/c and the fraction
+  1/2 + 0.98^2 = 1.4604 (a mass beyond the consistent one, Jacobi), the
+  dotted lines, up to 320 cells along (the bar) and 160 (the two bars).
 - two bars: prm/two_bars.prm (H = 0.1 m) to T = 2.5 s, exact solution; the
   same measures, the position of the second bar; square cells, n/10 across
   the first bar and n/10 + 1 across the second (non-matching) for n along.
@@ -106,15 +108,22 @@ def scene_prm(base, scene, entries):
 
 
 def mesh_prm(p, tau, global_refinements=None, adaptive=None, interval=2, theta=0.,
-             mass="lumped"):
+             mass="lumped", beta=None):
     text = "set Polynomial degree = %d\n" % p
     if p >= 2:
         # the matrix-free S with Jacobi: cheaper than the assembled S for
         # p >= 2 (benchmarks/step_operator.py), the same results
         text += "subsection Contact solver\n  set Step matrix = matrix-free\nend\n"
+    if beta is not None and beta > 1.:
+        # Jacobi: 'automatic' takes AMG for a mass beyond the consistent
+        # one, about twice the time here
+        text += "subsection Contact solver\n  set Preconditioner = Jacobi\nend\n"
     text += ("subsection Time integration\n  set Time step = %.17g\n"
              "  set Numerical dissipation = %g\n"
-             "  set Mass matrix = %s\nend\n" % (tau, theta, mass))
+             "  set Mass matrix = %s\n" % (tau, theta, mass))
+    if beta is not None:
+        text += "  set Consistent mass fraction = %.17g\n" % beta
+    text += "end\n"
     if global_refinements is not None:
         text += "subsection Mesh\n  set Initial global refinements = %d\nend\n" % global_refinements
     if adaptive:
@@ -135,6 +144,11 @@ dissipative = "uniform theta = %g" % dissipation
 # and p = 1 with the blended mass (its default fraction, 1/2 + (c tau/h)^2
 # at tau = h/(2c))
 blended = "uniform blended"
+# and p = 1 with tau = 0.98 h/c and the fraction 1/2 + (c tau/h)^2 = 1.4604,
+# beyond the consistent mass, where the trapezoidal rule's and the mass's
+# phase errors nearly cancel to all orders (exactly at c tau/h = 1)
+courant_long = 0.98
+blended_long = "uniform blended, tau = %g h/c" % courant_long
 
 
 def bar_measures(rows, summary, position_column):
@@ -154,7 +168,8 @@ def bar_measures(rows, summary, position_column):
             "ripple": max(abs(p - 1.) for p in plateau)}
 
 
-def bar_scene(key, base, scene, cells_list, position_column, across, levels, criteria):
+def bar_scene(key, base, scene, cells_list, long_cells, position_column, across, levels,
+              criteria):
     """across(cells along) -> scene entries of the cells across."""
     def entries(cells):
         return [("Cells along length", cells)] + across(cells)
@@ -162,18 +177,23 @@ def bar_scene(key, base, scene, cells_list, position_column, across, levels, cri
     for p in [1, 2, 3]:
         # uniform meshes, then the same with numerical dissipation
         # (doc/algorithms.md)
-        variants = [(0., "lumped", "uniform", "", cells_list[p]),
-                    (dissipation, "lumped", dissipative, "-theta-%g" % dissipation,
-                     cells_list[p])]
+        # (theta, mass, c tau/h, name, suffix, cells along)
+        variants = [(0., "lumped", 0.5, "uniform", "", cells_list[p]),
+                    (dissipation, "lumped", 0.5, dissipative,
+                     "-theta-%g" % dissipation, cells_list[p])]
         if p == 1:
-            variants.append((0., "blended", blended, "-blended",
+            variants.append((0., "blended", 0.5, blended, "-blended",
                              cells_list[p] + [2 * cells_list[p][-1]]))
-        for theta, mass, mesh, suffix, cells_of_variant in variants:
+            variants.append((0., "blended", courant_long, blended_long,
+                             "-blended-%g" % courant_long, long_cells))
+        for theta, mass, courant, mesh, suffix, cells_of_variant in variants:
             for cells in cells_of_variant:
-                tau = 1. / cells / (2. * p)
+                tau = courant / cells / p
                 rows, summary = run("%s-p%d-uniform-%d%s" % (key, p, cells, suffix),
                                     scene_prm(base, scene, entries(cells)) +
-                                    mesh_prm(p, tau, theta=theta, mass=mass))
+                                    mesh_prm(p, tau, theta=theta, mass=mass,
+                                             beta=0.5 + courant ** 2
+                                             if mass == "blended" else None))
                 results.setdefault(key, []).append(dict(
                     p=p, mesh=mesh, finest=cells, dofs=mean(column(rows, "dofs")),
                     time=run_time(summary), **bar_measures(rows, summary, position_column)))
@@ -193,7 +213,7 @@ bar = open("prm/bar_impact.prm").read()
 if not only or "bar" in only:
     bar_scene("bar", bar, "Bar impact",
               {1: [16, 32, 64, 128], 2: [8, 16, 32, 64], 3: [8, 16, 32]},
-              "mean_displacement_x", lambda cells: [("Height", 0.25)], 2,
+              [32, 64, 128, 192, 256, 320], "mean_displacement_x", lambda cells: [("Height", 0.25)], 2,
               [("adaptive recovery", "recovery velocity"),
                ("adaptive kelly", "kelly velocity")])
 
@@ -201,7 +221,7 @@ two_bars = open("prm/two_bars.prm").read()
 if not only or "two_bars" in only:
     bar_scene("two_bars", two_bars, "Two bars",
               {1: [20, 40, 80], 2: [10, 20, 40], 3: [10, 20]},
-              "mean_displacement_x_body2",
+              [20, 40, 80, 120, 160], "mean_displacement_x_body2",
               lambda cells: [("Cells across", cells // 10),
                              ("Cells across body 2", cells // 10 + 1)], 1,
               [("adaptive recovery", "recovery velocity")])
@@ -295,7 +315,7 @@ def print_crossings(key, values):
     print("\n%s: run time [s] (position error [m]) at an energy-norm error of\n" % key)
     print("| p | mesh | 0.10 | 0.05 |\n|---|---|---|---|")
     for p in [1, 2, 3]:
-        for mesh in ["uniform", dissipative, blended]:
+        for mesh in ["uniform", dissipative, blended, blended_long]:
             runs = [v for v in values if v["p"] == p and v["mesh"] == mesh]
             if not runs:
                 continue
@@ -326,13 +346,15 @@ for key, values in results.items():
         for ax, measure in zip(axes, ["error", "position"]):
             ax.loglog([v["time"] for v in uniform], [v[measure] for v in uniform], "o-",
                       color=colour, label="p = %d uniform" % p)
-            for variant, style in [(dissipative, "x--"), (blended, "+-.")]:
+            for variant, style in [(dissipative, "x--"), (blended, "+-."),
+                                   (blended_long, "*:")]:
                 runs = [v for v in values if v["p"] == p and v["mesh"] == variant]
                 if runs:
                     ax.loglog([v["time"] for v in runs], [v[measure] for v in runs], style,
                               color=colour, label="p = %d %s" % (p, variant))
             for v in values:
-                if v["p"] == p and v["mesh"] not in ["uniform", dissipative, blended]:
+                if v["p"] == p and v["mesh"] not in ["uniform", dissipative, blended,
+                                                     blended_long]:
                     ax.loglog([v["time"]], [v[measure]],
                               "s" if "recovery" in v["mesh"] else
                               "D" if "from level" in v["mesh"] else
