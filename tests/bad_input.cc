@@ -115,6 +115,14 @@ main(int argc, char **argv)
     {"consistent_mass_fraction_singular",
      "subsection Time integration\n  set Mass matrix = blended\n"
      "  set Consistent mass fraction = 1.5\nend\n"},
+    {"consistent_mass_fraction_above_one_adaptive_mesh",
+     "subsection Time integration\n  set Mass matrix = blended\n"
+     "  set Consistent mass fraction = 1.2\nend\n"
+     "subsection Mesh refinement\n  set Refinement interval = 4\nend\n"},
+    {"consistent_mass_fraction_above_one_adaptive_tau",
+     "subsection Time integration\n  set Mass matrix = blended\n"
+     "  set Consistent mass fraction = 1.2\n"
+     "  set Time step control = adaptive\nend\n"},
     {"consistent_mass_fraction_above_one_quadratic",
      "set Polynomial degree = 2\n"
      "subsection Time integration\n  set Mass matrix = blended\n"

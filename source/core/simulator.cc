@@ -72,6 +72,21 @@ namespace dyncontact
     problem->parse_parameters(prm);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
+    // beyond the consistent mass beta = 1/2 + (c tau/h)^2 holds for one tau
+    // and one h: its two-point rule under-integrates |v|^2, so that a
+    // refinement adds kinetic energy, and a shorter step sees a mass far
+    // from its formula
+    AssertThrow(time_integration.consistent_mass_fraction <= 1. ||
+                  (!mesh_adaptor->adapts_during_run() &&
+                   !time_integration.adaptive),
+                ExcMessage("Time integration/Consistent mass fraction above "
+                           "1 (a mass beyond the consistent one) is for a "
+                           "fixed mesh and a fixed time step: its fraction "
+                           "1/2 + (c tau/h)^2 holds for one tau and one h, "
+                           "and a refinement adds kinetic energy. Take "
+                           "Mesh refinement/Refinement interval = 0 and Time "
+                           "step control = fixed, or a fraction of at most "
+                           "1."));
     control.set_refinement_interval(mesh_adaptor->get_refinement_interval());
 
     vtu_writer       = std::make_unique<VtuWriter<dim>>(output);

@@ -42,11 +42,13 @@ namespace dyncontact
       "h)^4, to none at c tau / h = 1. Above 1 (c tau / h above "
       "1/sqrt(2); linear elements only) the mass is beyond the consistent "
       "one: in 1D the same formula, in 2D and 3D its tensor product, by "
-      "Gauss quadrature at 1/2 -+ sqrt(1 - 2 beta / 3) / 2 along each "
+      "a two-point rule at 1/2 -+ sqrt(1 - 2 beta / 3) / 2 along each "
       "axis, and nearly singular near 1.5. Behind a moving velocity jump "
       "(an impact) the energy-norm error falls like h^0.4 with 0.75 "
-      "instead of h^0.33 (lumped), and like h^0.5 to h^0.65 with c tau / "
-      "h = 0.98, beta = 1.4604 (doc/results.md). c is the speed of the "
+      "instead of h^0.33 (lumped), and about as fast with c tau / h = 0.98, "
+      "beta = 1.4604, with half the steps and a third of the CG iterations "
+      "(doc/results.md); above 1 only on a fixed mesh with a fixed time "
+      "step. c is the speed of the "
       "waves that matter, e.g. sqrt((lambda + 2 mu) / rho) for pressure "
       "waves. Not used by the other Mass matrix choices.");
     prm.declare_entry(
