@@ -37,28 +37,6 @@ namespace
            "  set Consistent mass fraction = " +
            fmt(beta, 6) + "\nend\n";
   }
-
-  double
-  error_at_end(const Statistics &s)
-  {
-    return s.column("error_energy_norm").back() /
-           std::sqrt(s.column("energy_total")[0]);
-  }
-
-  /// The largest |E^{n+1} - E^n| over the steps after the last active row.
-  double
-  change_after_release(const Statistics &s)
-  {
-    const auto e = s.column("energy_total"), active = s.column("active_nodes");
-    unsigned int last = 0;
-    for (unsigned int i = 0; i < e.size(); ++i)
-      if (active[i] > 0)
-        last = i;
-    double change = 0.;
-    for (unsigned int i = last + 2; i < e.size(); ++i)
-      change = std::max(change, std::abs(e[i] - e[i - 1]));
-    return change;
-  }
 } // namespace
 
 int
