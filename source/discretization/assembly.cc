@@ -145,7 +145,7 @@ namespace dyncontact
        * plus beta times the consistent one (a = 1: Gauss-Lobatto, the
        * lumped mass; a = 1/sqrt(3): Gauss, the consistent mass), in 2D
        * and 3D the tensor product of those, positive definite for every
-       * beta < 3/2 (the blend's formula itself is not above 9/8 in 2D).
+       * beta < 3/2 (the formula itself is indefinite above 9/8 in 2D).
        * Otherwise (unused) the one-point rule.
        */
       static Quadrature<dim>
