@@ -54,14 +54,6 @@ namespace dyncontact
     discretization.system.lumped_mass = time_integration.lumped_mass;
     discretization.system.consistent_mass_fraction =
       time_integration.consistent_mass_fraction;
-    AssertThrow(time_integration.consistent_mass_fraction <= 1. ||
-                  parameters.degree == 1,
-                ExcMessage("Time integration/Consistent mass fraction above "
-                           "1 (a mass beyond the consistent one, by a "
-                           "two-point rule per axis) is for Polynomial "
-                           "degree = 1 only; the range is 0 to 1 for "
-                           "Polynomial degree = " +
-                           std::to_string(parameters.degree) + "."));
     discretization.numerical_dissipation =
       time_integration.numerical_dissipation;
     discretization.serial_triangulation = parameters.serial_triangulation;
@@ -72,21 +64,8 @@ namespace dyncontact
     problem->parse_parameters(prm);
     mesh_adaptor = std::make_unique<MeshAdaptor<dim>>();
     mesh_adaptor->parse_parameters(prm);
-    // beyond the consistent mass beta = 1/2 + (c tau/h)^2 holds for one tau
-    // and one h: its two-point rule under-integrates |v|^2, so that a
-    // refinement adds kinetic energy, and a shorter step sees a mass far
-    // from its formula
-    AssertThrow(time_integration.consistent_mass_fraction <= 1. ||
-                  (!mesh_adaptor->adapts_during_run() &&
-                   !time_integration.adaptive),
-                ExcMessage("Time integration/Consistent mass fraction above "
-                           "1 (a mass beyond the consistent one) is for a "
-                           "fixed mesh and a fixed time step: its fraction "
-                           "1/2 + (c tau/h)^2 holds for one tau and one h, "
-                           "and a refinement adds kinetic energy. Take "
-                           "Mesh refinement/Refinement interval = 0 and Time "
-                           "step control = fixed, or a fraction of at most "
-                           "1."));
+    time_integration.check_mass_fraction(parameters.degree,
+                                         mesh_adaptor->adapts_during_run());
     control.set_refinement_interval(mesh_adaptor->get_refinement_interval());
 
     vtu_writer       = std::make_unique<VtuWriter<dim>>(output);

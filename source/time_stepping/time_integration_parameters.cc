@@ -152,4 +152,33 @@ namespace dyncontact
     tolerance             = prm.get_double("Time step tolerance");
     prm.leave_subsection();
   }
+
+
+
+  void
+  TimeIntegrationParameters::check_mass_fraction(const unsigned int degree,
+                                                 const bool mesh_adapts) const
+  {
+    if (consistent_mass_fraction <= 1.)
+      return;
+    AssertThrow(degree == 1,
+                ExcMessage("Time integration/Consistent mass fraction above "
+                           "1 (a mass beyond the consistent one, by a "
+                           "two-point rule per axis) is for Polynomial "
+                           "degree = 1 only; the range is 0 to 1 for "
+                           "Polynomial degree = " +
+                           std::to_string(degree) + "."));
+    // beta = 1/2 + (c tau/h)^2 holds for one tau and one h: the two-point
+    // rule under-integrates |v|^2, so that a refinement adds kinetic
+    // energy, and a shorter step sees a mass far from its formula
+    AssertThrow(!mesh_adapts && !adaptive,
+                ExcMessage("Time integration/Consistent mass fraction above "
+                           "1 (a mass beyond the consistent one) is for a "
+                           "fixed mesh and a fixed time step: its fraction "
+                           "1/2 + (c tau/h)^2 holds for one tau and one h, "
+                           "and a refinement adds kinetic energy. Take "
+                           "Mesh refinement/Refinement interval = 0 and Time "
+                           "step control = fixed, or a fraction of at most "
+                           "1."));
+  }
 } // namespace dyncontact

@@ -52,6 +52,14 @@ namespace dyncontact
 
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Throws if Consistent mass fraction is above 1 (a mass beyond the
+    /// consistent one) with Polynomial degree @p degree other than 1, or
+    /// with a mesh that adapts during the run (@p mesh_adapts) or Time
+    /// step control = adaptive.
+    void
+    check_mass_fraction(const unsigned int degree,
+                        const bool         mesh_adapts) const;
   };
 } // namespace dyncontact
 
