@@ -659,6 +659,30 @@ namespace testing
       growth = std::max(growth, (e[i] + w[i]) - (e[i - 1] + w[i - 1]));
     return growth;
   }
+  /// On bar_prm()'s bar (v0 = c = 1, released at 2.1 s), @p s run with
+  /// @p tau on @p cells cells along: E + W never increases, E is constant
+  /// after the release, the normal velocity of persistently active nodes
+  /// is zero (in more than @p min_steps steps), and the contact ends
+  /// within 2 tau + h/c of 2.1 s; three lines of the log.
+  inline void
+  log_bar_release_checks(const Statistics  &s,
+                         const double       tau,
+                         const unsigned int cells,
+                         const unsigned int min_steps)
+  {
+    const double e0 = s.column("energy_total")[0];
+    log() << "  E + W non-increasing: "
+          << check(max_energy_increase(s) <= 1e-10 * e0)
+          << "; E constant after the release: "
+          << check(change_after_release(s) <= 1e-10 * e0) << "\n";
+    const auto [vn_max, n] = persistent_normal_velocity(s);
+    log() << "  normal velocity at persistently active nodes zero: "
+          << check(n > min_steps && vn_max < 1e-8) << "\n";
+    const double end = contact_interval(s).second;
+    log() << "  contact ends at " << fmt(end) << " (exact 2.1): "
+          << check(std::abs(end - 2.1) <= 2. * tau + 1. / cells) << "\n";
+  }
+
   /// The same on an adaptive mesh, less the energy changes of the mesh
   /// transfers (column energy_transfer), which Theorem 3.2 does not cover.
   inline double

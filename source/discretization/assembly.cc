@@ -40,7 +40,6 @@ namespace dyncontact
         , consistent_fraction(lumped_mass ? 0. : consistent_fraction)
         , lumped_fraction(lumped_mass ? 1. : 1. - consistent_fraction)
         , quadrature(fe.degree + 1)
-        , beyond_consistent_quadrature(two_point_rule(consistent_fraction))
         , face_quadrature(fe.degree + 1)
         , lumped_face_quadrature(fe.degree + 1)
         , fe_values(mapping,
@@ -63,7 +62,7 @@ namespace dyncontact
                        update_values | update_JxW_values)
         , beyond_consistent_values(mapping,
                                    scalar_fe,
-                                   beyond_consistent_quadrature,
+                                   two_point_rule(consistent_fraction),
                                    update_values | update_JxW_values)
         , dofs_per_cell(fe.n_dofs_per_cell())
         , n_nodes(scalar_fe.n_dofs_per_cell())
@@ -99,14 +98,15 @@ namespace dyncontact
           nodal_values.reinit(cell);
         if (consistent_fraction > 1.)
           beyond_consistent_values.reinit(cell);
-        bool positive = true;
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-          if (!(fe_values.JxW(q) > 0.))
-            positive = false;
-        if (consistent_fraction > 1.)
-          for (unsigned int q = 0; q < beyond_consistent_quadrature.size(); ++q)
-            if (!(beyond_consistent_values.JxW(q) > 0.))
-              positive = false;
+        const auto positive_at = [](const FEValues<dim> &values) {
+          for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+            if (!(values.JxW(q) > 0.))
+              return false;
+          return true;
+        };
+        const bool positive =
+          positive_at(fe_values) &&
+          (consistent_fraction <= 1. || positive_at(beyond_consistent_values));
         // a translation of the cell before has its values and JxW
         // (FEValues keeps them), hence with the same density its scalar
         // mass and load, and the same element mass matrix
@@ -247,7 +247,6 @@ namespace dyncontact
       /// (lumped: 0 and 1; consistent: 1 and 0)
       const double                 consistent_fraction, lumped_fraction;
       const QGauss<dim>            quadrature;
-      const Quadrature<dim>        beyond_consistent_quadrature;
       const QGauss<dim - 1>        face_quadrature;
       const QGaussLobatto<dim - 1> lumped_face_quadrature;
       FEValues<dim>                fe_values;
