@@ -31,9 +31,9 @@ namespace dyncontact
     prm.declare_entry(
       "Consistent mass fraction",
       "0.75",
-      Patterns::Double(0.),
+      Patterns::Double(0., 1.5),
       "beta (dimensionless, 0 to 1, and for Polynomial degree = 1 below "
-      "1.5, not including it) of Mass matrix = blended. The lumped mass with the trapezoidal "
+      "1.5) of Mass matrix = blended. The lumped mass with the trapezoidal "
       "rule propagates short waves too slowly, the consistent mass too "
       "fast; for linear elements beta = 1/2 + (c tau / h)^2 cancels the "
       "leading term of the phase error of a wave of speed c along cells "
@@ -135,16 +135,12 @@ namespace dyncontact
     scheme       = prm.get("Scheme");
     lumped_mass  = (prm.get("Mass matrix") == "lumped");
     blended_mass = (prm.get("Mass matrix") == "blended");
-    // (the range is checked here, where 1.5 itself can be named: a
-    // pattern would call it inclusive)
-    AssertThrow(prm.get_double("Consistent mass fraction") < 1.5,
-                ExcMessage("Time integration/Consistent mass fraction = " +
-                           prm.get("Consistent mass fraction") +
-                           " is refused: the range is 0 to 1, and for "
-                           "Polynomial degree = 1 up to 1.5, not including "
-                           "1.5, which makes the mass matrix singular."));
     consistent_mass_fraction =
       blended_mass ? prm.get_double("Consistent mass fraction") : 1.;
+    AssertThrow(consistent_mass_fraction < 1.5,
+                ExcMessage("Time integration/Consistent mass fraction = 1.5 "
+                           "makes the mass matrix singular; the range is 0 "
+                           "to 1, and below 1.5 for Polynomial degree = 1."));
     numerical_dissipation = prm.get_double("Numerical dissipation");
     end_time              = prm.get_double("End time");
     time_step             = prm.get_double("Time step");
