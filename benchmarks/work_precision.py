@@ -48,10 +48,9 @@ steps from the coarse mesh (no global refinement, Minimum level 0: rows
 matrix-free, Jacobi), p = 1 runs assemble it.
 
 The crossings of 0.10 and 0.05 count only where the error stays below on
-every slower run of the variant (on the meshes run). Run it with nothing else on the
-machine: a contact step is mostly sparse matrix-vector products, bound by
-memory bandwidth, and a second job on the other core made the bar's runs
-about twice as slow.
+every slower run of the variant (on the meshes run). Run times differ
+between machines of the same kind (by a factor of 2 for the bar's runs on
+2026-12-01, doc/results.md): compare runs of one machine.
 
 Writes doc/work_precision_<scene>.png and prints the tables of
 doc/results.md. Usage, from the repository's top folder after tools/setup.sh:
