@@ -224,7 +224,8 @@ bar = open("prm/bar_impact.prm").read()
 if not only or "bar" in only:
     bar_scene("bar", bar, "Bar impact",
               {1: [16, 32, 64, 128], 2: [8, 16, 32, 64], 3: [8, 16, 32]},
-              [32, 64, 128, 192, 256, 320, 352, 384, 416, 448], "mean_displacement_x", lambda cells: [("Height", 0.25)], 2,
+              [32, 64, 128, 192, 256, 320, 352, 384, 416, 448], "mean_displacement_x",
+              lambda cells: [("Height", 0.25)], 2,
               [("adaptive recovery", "recovery velocity"),
                ("adaptive kelly", "kelly velocity")])
 
@@ -312,14 +313,15 @@ def crossing(runs, target):
     every slower run: between the last run above it and the next,
     interpolated log-log (the error at T moves with the phase of the impact
     in a step, so it does not fall evenly from one mesh to the next); the
-    overshoot is the largest of the runs from there on. The fastest run's
-    own values if no run is above the target; None if the slowest run is."""
+    overshoot is the largest of the runs from there on (the bars' runs all
+    have one). The fastest run's own values if no run is above the target;
+    None if the slowest run is."""
     runs = sorted(runs, key=lambda v: v["time"])
     above = [i for i, v in enumerate(runs) if v["error"] > target]
     if above and above[-1] + 1 == len(runs):
         return None
     below = runs[above[-1] + 1 if above else 0:]
-    overshoot = max([v["overshoot"] for v in below if "overshoot" in v] or [math.nan])
+    overshoot = max(v["overshoot"] for v in below)
     if not above:
         return below[0]["time"], below[0]["position"], overshoot
     a, b = runs[above[-1]], below[0]
